@@ -1,0 +1,47 @@
+// common/gl/scene.cpp
+#include "gl/scene.h"
+
+#include "gl/gl.h"
+
+namespace gllab {
+
+void ortho_fit(int width, int height, double half_width, double half_height, double depth) {
+  const double aspect = static_cast<double>(width) / height;
+  double hw = half_width, hh = half_height;
+  if (hw / hh < aspect) hw = hh * aspect;  // window wider than the box
+  else hh = hw / aspect;                   // window taller than the box
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(-hw, hw, -hh, hh, -depth, depth);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+}
+
+void enable_headlight() {
+  const GLfloat direction[] = {-0.35f, 0.45f, 1.f, 0.f};  // w = 0: a direction
+  const GLfloat white[] = {1.f, 1.f, 1.f, 1.f};
+  const GLfloat ambient[] = {0.2f, 0.2f, 0.2f, 1.f};
+  glLightfv(GL_LIGHT0, GL_POSITION, direction);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHTING);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glEnable(GL_NORMALIZE);
+}
+
+void draw_label(double x, double y, double z, const std::string& text, Rgb colour, int dx, int dy) {
+  GLdouble model[16], projection[16];
+  GLint viewport[4];
+  glGetDoublev(GL_MODELVIEW_MATRIX, model);
+  glGetDoublev(GL_PROJECTION_MATRIX, projection);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  GLdouble wx = 0, wy = 0, wz = 0;
+  if (gluProject(x, y, z, model, projection, viewport, &wx, &wy, &wz) != GL_TRUE) return;
+  const int left = static_cast<int>(wx + 0.5) - text_width(text) / 2 + dx;
+  const int top = viewport[3] - static_cast<int>(wy + 0.5) - kGlyphHeight / 2 + dy;
+  draw_text(left, top, text, colour);
+}
+
+}  // namespace gllab

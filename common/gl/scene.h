@@ -1,0 +1,24 @@
+// common/gl/scene.h — small set-ups most labs share.
+#pragma once
+
+#include <string>
+
+#include "gl/text.h"
+
+namespace gllab {
+
+/// Orthographic projection showing at least [-half_width, half_width] x
+/// [-half_height, half_height] with square pixels in a width x height
+/// viewport; z from -depth to depth. Leaves GL_MODELVIEW current and identity.
+void ortho_fit(int width, int height, double half_width, double half_height, double depth = 10);
+
+/// One white directional light from the upper left front, with
+/// GL_COLOR_MATERIAL (glColor sets ambient and diffuse) and GL_NORMALIZE.
+void enable_headlight();
+
+/// Text centred on the window position of the object-space point (x, y, z)
+/// under the current matrices, shifted by (dx, dy) pixels (dy downwards).
+void draw_label(double x, double y, double z, const std::string& text, Rgb colour,
+                int dx = 0, int dy = 0);
+
+}  // namespace gllab

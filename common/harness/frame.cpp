@@ -1,0 +1,74 @@
+// common/harness/frame.cpp
+#include "harness/frame.h"
+
+#include <sstream>
+
+#include "gl/check.h"
+#include "gl/gl.h"
+#include "gl/text.h"
+
+namespace gllab {
+
+void draw_frame(const Lab& lab, const State& state) {
+  glViewport(0, 0, state.width, state.height);
+  glPushAttrib(GL_ALL_ATTRIB_BITS);
+  glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+
+  lab.display(state);
+
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPopMatrix();
+  glPopClientAttrib();
+  glPopAttrib();
+  check_gl_errors("in display() of view '" + state.view() + "'");
+
+  if (state.help) {
+    draw_text_panel(8, 8, help_lines(lab, state), Rgb{1.f, 1.f, 0.85f});
+    check_gl_errors("while drawing the help overlay");
+  }
+}
+
+std::vector<std::string> help_lines(const Lab& lab, const State& state) {
+  std::vector<std::string> lines;
+  lines.push_back(lab.title);
+  const View& v = state.views()[state.view_index()];
+  lines.push_back("view " + std::to_string(state.view_index() + 1) + "/" +
+                  std::to_string(state.views().size()) + ": " + v.name + " - " + v.what);
+  lines.push_back("");
+  lines.push_back("[v]/[V] next/previous view  [h] help");
+  lines.push_back("[p] print headless command  [Esc] quit");
+  for (const Key& k : lab.keys) lines.push_back(std::string("[") + static_cast<char>(k.key) + "] " + k.what);
+  if (!state.params().empty()) {
+    lines.push_back("");
+    std::ostringstream p;
+    for (const Param& param : state.params()) {
+      const std::string item = param.name + "=" + [&] {
+        std::ostringstream n;
+        n << param.value;
+        return n.str();
+      }();
+      if (p.tellp() > 0 && static_cast<int>(p.tellp()) + 1 + static_cast<int>(item.size()) > 56) {
+        lines.push_back(p.str());
+        p.str("");
+      }
+      p << (p.tellp() > 0 ? " " : "") << item;
+    }
+    lines.push_back(p.str());
+  }
+  return lines;
+}
+
+void draw_error_lines(const std::vector<std::string>& errors) {
+  GLint vp[4];
+  glGetIntegerv(GL_VIEWPORT, vp);
+  const int y = vp[3] - 8 - (kGlyphHeight + 12) - kGlyphHeight * static_cast<int>(errors.size() - 1);
+  draw_text_panel(8, y, errors, Rgb{1.f, 0.35f, 0.3f});
+}
+
+}  // namespace gllab

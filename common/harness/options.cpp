@@ -1,0 +1,135 @@
+// common/harness/options.cpp — parsing with one-line errors that name the value.
+#include "harness/options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace gllab {
+
+namespace {
+
+int parse_dimension(const std::string& part, const std::string& whole) {
+  if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
+    throw UsageError("malformed --size '" + whole + "' (expected WxH, e.g. 512x512)");
+  const int v = std::atoi(part.c_str());
+  if (v < 1 || v > kMaxSize)
+    throw UsageError("--size '" + whole + "': " + part + " is outside 1.." +
+                     std::to_string(kMaxSize));
+  return v;
+}
+
+}  // namespace
+
+void parse_size(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos)
+    throw UsageError("malformed --size '" + text + "' (expected WxH, e.g. 512x512)");
+  width = parse_dimension(text.substr(0, x), text);
+  height = parse_dimension(text.substr(x + 1), text);
+}
+
+Options parse_options(const std::vector<std::string>& args, Runner runner) {
+  Options o;
+  const std::string out_flag = runner == Runner::kHeadless ? "--out" : "--capture";
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--view") o.view = value();
+    else if (a == "--size") parse_size(value(), o.width, o.height);
+    else if (a == out_flag) o.out = value();
+    else if (a == "--set") o.sets.push_back(value());
+    else if (a == "--time") {
+      const std::string& t = value();
+      char* end = nullptr;
+      o.time = std::strtod(t.c_str(), &end);
+      if (t.empty() || *end != '\0' || !std::isfinite(o.time) || o.time < 0)
+        throw UsageError("malformed --time '" + t + "' (expected seconds >= 0)");
+    } else if (a == "--overlay") o.overlay = true;
+    else if (a == "--list-views") o.list_views = true;
+    else if (a == "--info" && runner == Runner::kHeadless) o.info = true;
+    else if (a == "--help" || a == "-h") o.help = true;
+    else throw UsageError("unknown option '" + a + "' (try --help)");
+  }
+  if (o.out.empty() && runner == Runner::kHeadless && !o.help && !o.list_views && !o.info)
+    throw UsageError("missing --out FILE (the PNG to write)");
+  if (!o.out.empty() && o.out.back() == '/')
+    throw UsageError(out_flag + " '" + o.out + "' is a directory, not a PNG file name");
+  return o;
+}
+
+State make_state(const Lab& lab, const Options& options) {
+  State s(lab.views, lab.params);
+  s.width = options.width;
+  s.height = options.height;
+  s.time = options.time;
+  s.help = options.overlay;
+  try {
+    if (!options.view.empty()) s.select_view(options.view);
+    for (const std::string& set : options.sets) s.set_from_text(set);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  return s;
+}
+
+std::string views_text(const Lab& lab) {
+  std::ostringstream out;
+  for (const View& v : lab.views) {
+    out << "  " << v.name;
+    for (std::size_t pad = v.name.size(); pad < 20; ++pad) out << ' ';
+    out << v.what << '\n';
+  }
+  return out.str();
+}
+
+std::string usage_text(const Lab& lab, const std::string& program, Runner runner) {
+  std::ostringstream out;
+  const bool headless = runner == Runner::kHeadless;
+  out << lab.title << "\n\n";
+  if (headless) {
+    out << "usage: " << program << " --out FILE.png [--view NAME] [--size WxH] [--set key=value]...\n"
+        << "       " << program << " --list-views | --info | --help\n\n"
+        << "Renders one view of the lab without a display (OSMesa) and writes a PNG.\n"
+        << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n\n";
+  } else {
+    out << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
+        << "       " << program << " --list-views | --help\n\n"
+        << "Opens the lab in a window (freeglut). Without a display, render headless:\n"
+        << "  " << program << "_headless --view NAME --out FILE.png\n"
+        << "--capture draws the first frame, writes it as PNG and exits (window smoke test).\n\n";
+  }
+  out << "options:\n"
+      << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"
+      << "  --size WxH        framebuffer size in pixels (default 512x512)\n"
+      << "  --set key=value   lab parameter (repeatable; see below)\n"
+      << "  --time SECONDS    animation time (default 0)\n"
+      << "  --overlay         draw the help overlay\n\n"
+      << "views:\n" << views_text(lab) << "\nparameters:\n";
+  if (lab.params.empty()) out << "  (none)\n";
+  for (const Param& p : lab.params) {
+    std::ostringstream range;
+    range << p.name << '=' << p.value << " [" << p.lo << ".." << p.hi << "]";
+    out << "  " << range.str();
+    for (std::size_t pad = range.str().size(); pad < 26; ++pad) out << ' ';
+    out << p.what << '\n';
+  }
+  if (!headless) {
+    out << "\nkeys:\n  v / V   next / previous view\n  h       help overlay\n"
+        << "  p       print the command that renders this state headless\n  Esc     quit\n";
+    for (const Key& k : lab.keys) out << "  " << k.key << "       " << k.what << '\n';
+  }
+  return out.str();
+}
+
+std::string program_name(const char* argv0) {
+  std::string name = argv0 ? argv0 : "lab";
+  const auto slash = name.rfind('/');
+  if (slash != std::string::npos) name = name.substr(slash + 1);
+  return name;
+}
+
+}  // namespace gllab

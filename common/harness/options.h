@@ -1,0 +1,47 @@
+// common/harness/options.h — the command line both runners share.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "harness/lab.h"
+
+namespace gllab {
+
+/// Bad command-line input: the runner prints what() as one line and exits 2.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+enum class Runner { kWindow, kHeadless };
+
+struct Options {
+  std::string view;                 // empty: the lab's first view
+  int width = 512, height = 512;    // --size WxH
+  std::string out;                  // --out FILE (headless), --capture FILE (window)
+  std::vector<std::string> sets;    // --set key=value, in order
+  double time = 0;                  // --time SECONDS
+  bool overlay = false;             // --overlay: draw the help overlay
+  bool list_views = false;
+  bool info = false;                // --info: print renderer and versions (headless)
+  bool help = false;
+};
+
+inline constexpr int kMaxSize = 8192;
+
+/// Parses argv (without argv[0]). Throws UsageError naming the bad argument.
+Options parse_options(const std::vector<std::string>& args, Runner runner);
+/// Parses "WxH" with 1 <= W, H <= kMaxSize. Throws UsageError.
+void parse_size(const std::string& text, int& width, int& height);
+
+/// The State for these options: view selected, --set applied. Throws UsageError.
+State make_state(const Lab& lab, const Options& options);
+
+std::string usage_text(const Lab& lab, const std::string& program, Runner runner);
+std::string views_text(const Lab& lab);
+
+/// "01_immediate_mode" from a path like "build/bin/01_immediate_mode_headless".
+std::string program_name(const char* argv0);
+
+}  // namespace gllab

@@ -1,0 +1,152 @@
+// common/harness/window_main.cpp — <lab>: the lab in a freeglut window.
+//
+// Keys of the runner: [v]/[V] view, [h] help overlay, [p] print the headless
+// command for what is on screen, [Esc] quit. Everything else goes to the lab.
+#include <X11/Xlib.h>
+#include <GL/freeglut.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/check.h"
+#include "gl/gl.h"
+#include "harness/frame.h"
+#include "harness/lab.h"
+#include "harness/options.h"
+#include "image/image.h"
+
+namespace {
+
+// GLUT callbacks take no user pointer, so the runner keeps its state here.
+struct WindowState {
+  gllab::Lab lab;
+  std::optional<gllab::State> state;
+  std::string program;
+  std::string capture;                  // --capture FILE: write the first frame, exit
+  std::vector<std::string> errors;      // shown on screen until the next key
+};
+WindowState* g_window = nullptr;
+
+void update_title() {
+  const std::string title = g_window->lab.title + "  -  " + g_window->state->view();
+  glutSetWindowTitle(title.c_str());
+}
+
+void display() {
+  WindowState& w = *g_window;
+  gllab::draw_frame(w.lab, *w.state);
+  for (std::string& e : gllab::take_frame_errors()) {
+    std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.c_str());
+    w.errors.push_back(std::move(e));
+  }
+  if (!w.errors.empty()) gllab::draw_error_lines(w.errors);
+  if (!w.capture.empty()) {
+    // Read the back buffer: exactly what the lab drew, before the swap.
+    glFinish();
+    std::vector<std::uint8_t> rows(static_cast<std::size_t>(w.state->width) * w.state->height * 4);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w.state->width, w.state->height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    int status = w.errors.empty() ? 0 : 1;
+    try {
+      gllab::write_png(w.capture, gllab::image_from_bottom_up(rows.data(), w.state->width, w.state->height));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.what());
+      status = 1;
+    }
+    std::exit(status);
+  }
+  glutSwapBuffers();
+}
+
+void reshape(int width, int height) {
+  g_window->state->width = width;
+  g_window->state->height = height;
+}
+
+void keyboard(unsigned char key, int, int) {
+  WindowState& w = *g_window;
+  gllab::State& s = *w.state;
+  w.errors.clear();
+  switch (key) {
+    case 27: std::exit(0);
+    case 'h': s.help = !s.help; break;
+    case 'v': s.next_view(+1); break;
+    case 'V': s.next_view(-1); break;
+    case 'p':
+      std::printf("%s_headless %s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(),
+                  s.view().c_str());
+      std::fflush(stdout);
+      return;
+    default:
+      if (!w.lab.keyboard || !w.lab.keyboard(s, key)) return;
+  }
+  update_title();
+  glutPostRedisplay();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string program = gllab::program_name(argv[0]);
+  auto fail = [&](int status, const std::string& message) {
+    std::fprintf(stderr, "%s: %s\n", program.c_str(), message.c_str());
+    return status;
+  };
+  static WindowState window;
+  g_window = &window;
+  window.program = program;
+  try {
+    window.lab = gllab::define_lab();
+    gllab::validate_lab(window.lab);
+    const gllab::Options options = gllab::parse_options(
+        std::vector<std::string>(argv + 1, argv + argc), gllab::Runner::kWindow);
+    if (options.help) {
+      std::fputs(gllab::usage_text(window.lab, program, gllab::Runner::kWindow).c_str(), stdout);
+      return 0;
+    }
+    if (options.list_views) {
+      for (const gllab::View& v : window.lab.views) std::printf("%s\n", v.name.c_str());
+      return 0;
+    }
+    window.state = gllab::make_state(window.lab, options);
+    window.capture = options.out;
+  } catch (const gllab::UsageError& e) {
+    return fail(2, e.what());
+  } catch (const std::exception& e) {
+    return fail(1, e.what());
+  }
+
+  // freeglut exits 1 with "failed to open display ''" when there is none;
+  // say what to do instead.
+  // Keep this connection open until the window exists: an X server with no
+  // clients left resets, and a connection made during the reset fails.
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) {
+    return fail(2, "cannot open a window: no X display (DISPLAY='" +
+                       std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") +
+                       "'); render headless instead: build/bin/" + window.lab.id +
+                       "_headless --view " + window.state->view() + " --out " +
+                       window.state->view() + ".png (or run under xvfb-run -a)");
+  }
+
+  int glut_argc = 1;  // our options are parsed already; GLUT sees none of them
+  glutInit(&glut_argc, argv);
+  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
+  glutInitWindowSize(window.state->width, window.state->height);
+  glutCreateWindow(window.lab.title.c_str());
+  XCloseDisplay(display);
+  if (glGetString(GL_RENDERER) == nullptr) return fail(1, "GL_RENDERER is null: no usable GL context");
+  update_title();
+  if (window.lab.init) window.lab.init();
+  gllab::check_gl_errors("in init()");
+  glutDisplayFunc(display);
+  glutReshapeFunc(reshape);
+  glutKeyboardFunc(keyboard);
+  glutMainLoop();
+  return 0;
+}

@@ -1,0 +1,118 @@
+// tests/harness/lab_views_test.cpp — one test per lab view, discovered from
+// the programs themselves (<lab>_headless --list-views), so a new view is
+// tested, and needs a reference image, without editing this file.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "image/compare.h"
+#include "image/image.h"
+#include "test_support.h"
+
+namespace {
+
+using gllab::run_process;
+using gllab::testing::headless;
+using gllab::testing::kBinDir;
+using gllab::testing::kSourceDir;
+using gllab::testing::ScratchDir;
+
+struct LabView {
+  std::string lab, view;
+};
+
+std::vector<LabView> all_views() {
+  std::vector<LabView> views;
+  for (const std::string& lab : gllab::testing::lab_ids()) {
+    const gllab::ProcessResult r = run_process({headless(lab), "--list-views"});
+    std::stringstream in(r.out);
+    for (std::string v; std::getline(in, v);) views.push_back({lab, v});
+    if (r.exit_status != 0) views.push_back({lab, "LIST_VIEWS_FAILED"});
+  }
+  return views;
+}
+
+std::string name_of(const ::testing::TestParamInfo<LabView>& info) {
+  return info.param.lab + "__" + info.param.view;
+}
+
+std::string file_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+class EveryLabView : public ::testing::TestWithParam<LabView> {
+ protected:
+  std::string labrun_out() const { return (dir_.path() / "out").string(); }
+  gllab::ProcessResult labrun(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> argv = {(kBinDir / "labrun").string(), "--labs", GetParam().lab,
+                                     "--views", GetParam().view, "--out", labrun_out()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    return run_process(argv);
+  }
+  ScratchDir dir_{"view"};
+};
+
+TEST_P(EveryLabView, HasAReferenceImage) {
+  const auto ref = kSourceDir / "reference_images" / (GetParam().lab + "__" + GetParam().view + ".png");
+  EXPECT_TRUE(std::filesystem::exists(ref)) << ref << " is missing: run make references";
+}
+
+TEST_P(EveryLabView, MatchesItsReference) {
+  const gllab::ProcessResult r = labrun();
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+}
+
+// DESIGN.md: softpipe differs from llvmpipe only on a few line pixels; the
+// tolerance in reference_images/MANIFEST must let that pass.
+TEST_P(EveryLabView, SoftpipeRenderPassesAgainstLlvmpipeReference) {
+  const gllab::ProcessResult r = labrun({"--env", "GALLIUM_DRIVER=softpipe"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+}
+
+// Reference images must be reproducible: three headless runs give the same
+// bytes, and the same pixels as the committed reference.
+TEST_P(EveryLabView, ThreeHeadlessRunsAreByteIdentical) {
+  std::vector<std::string> bytes;
+  for (int run = 0; run < 3; ++run) {
+    const auto out = dir_ / ("run" + std::to_string(run) + ".png");
+    ASSERT_EQ(run_process({headless(GetParam().lab), "--view", GetParam().view, "--out", out.string()})
+                  .exit_status, 0);
+    bytes.push_back(file_bytes(out));
+  }
+  EXPECT_FALSE(bytes[0].empty());
+  EXPECT_EQ(bytes[0], bytes[1]);
+  EXPECT_EQ(bytes[0], bytes[2]);
+  const auto ref = kSourceDir / "reference_images" / (GetParam().lab + "__" + GetParam().view + ".png");
+  if (std::filesystem::exists(ref)) {
+    const gllab::Comparison c = gllab::compare_images(gllab::read_png(ref.string()),
+                                                      gllab::read_png((dir_ / "run0.png").string()), 0);
+    EXPECT_EQ(c.differing_pixels, 0) << "same renderer, different pixels than " << ref;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Labs, EveryLabView, ::testing::ValuesIn(all_views()), name_of);
+
+// The window program draws the default view through GLX; under Xvfb the
+// pixels must equal the headless (OSMesa) render. DESIGN.md measured them
+// byte-identical, so any difference at all fails.
+class EveryLabWindow : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryLabWindow, DefaultViewUnderXvfbEqualsHeadlessRender) {
+  ScratchDir dir("window");
+  const std::string lab = GetParam();
+  const auto window_png = dir / "window.png", headless_png = dir / "headless.png";
+  const gllab::ProcessResult w = run_process(
+      {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", (kBinDir / lab).string(),
+       "--capture", window_png.string()});
+  ASSERT_EQ(w.exit_status, 0) << w.out << w.err;
+  ASSERT_EQ(run_process({headless(lab), "--out", headless_png.string()}).exit_status, 0);
+  const gllab::Comparison c = gllab::compare_images(gllab::read_png(headless_png.string()),
+                                                    gllab::read_png(window_png.string()), 0);
+  EXPECT_EQ(c.differing_pixels, 0) << "max delta " << c.max_delta;
+}
+
+INSTANTIATE_TEST_SUITE_P(Labs, EveryLabWindow, ::testing::ValuesIn(gllab::testing::lab_ids()));
+
+}  // namespace

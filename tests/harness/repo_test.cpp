@@ -1,0 +1,73 @@
+// tests/harness/repo_test.cpp — the repository stays in step with the one
+// CMake lab list: lab folders, README table, reference images, linking.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+
+#include "test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gllab::run_process;
+using gllab::testing::kBinDir;
+using gllab::testing::kSourceDir;
+using gllab::testing::lab_ids;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Repository, EveryLabFolderIsInTheCMakeListAndViceVersa) {
+  std::set<std::string> folders;
+  for (const auto& e : fs::directory_iterator(kSourceDir / "labs"))
+    if (e.is_directory()) folders.insert(e.path().filename().string());
+  const std::vector<std::string> labs = lab_ids();
+  EXPECT_EQ(folders, std::set<std::string>(labs.begin(), labs.end()));
+  for (const std::string& lab : labs) {
+    EXPECT_TRUE(fs::exists(kSourceDir / "labs" / lab / (lab + ".cpp"))) << lab;
+    EXPECT_TRUE(fs::exists(kSourceDir / "labs" / lab / "README.md")) << lab;
+  }
+}
+
+// README.md has a table row per lab: | NN | topic | `build/bin/<lab>` | ![](reference_images/<lab>__default.png) |
+TEST(Repository, ReadmeLabTableMatchesTheCMakeList) {
+  const std::string readme = read_text(kSourceDir / "README.md");
+  const std::regex row(R"(\|\s*(\d\d)\s*\|[^|\n]*\|\s*`build/bin/(\w+)`\s*\|\s*!\[[^\]]*\]\(reference_images/(\w+)__default\.png\)\s*\|)");
+  std::vector<std::string> listed;
+  for (std::sregex_iterator it(readme.begin(), readme.end(), row), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    EXPECT_EQ(m[2].str().substr(0, 2), m[1].str()) << m[0];
+    EXPECT_EQ(m[2].str(), m[3].str()) << m[0];
+    EXPECT_TRUE(fs::exists(kSourceDir / "reference_images" / (m[3].str() + "__default.png"))) << m[0];
+    listed.push_back(m[2].str());
+  }
+  EXPECT_EQ(listed, lab_ids());
+}
+
+TEST(Repository, EveryViewHasAReferenceAndEveryReferenceAView) {
+  const gllab::ProcessResult r = run_process({(kBinDir / "labrun").string(), "--check-references"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+}
+
+// DESIGN.md: a program that links both libGL and libOSMesa renders nothing,
+// silently. Window programs must not load OSMesa; headless ones no libGL/GLX.
+TEST(Linking, NoProgramLinksBothLibGlAndOsmesa) {
+  for (const std::string& lab : lab_ids()) {
+    const gllab::ProcessResult window = run_process({"/usr/bin/readelf", "-d", (kBinDir / lab).string()});
+    const gllab::ProcessResult headless =
+        run_process({"/usr/bin/readelf", "-d", gllab::testing::headless(lab)});
+    ASSERT_EQ(window.exit_status, 0) << window.err;
+    ASSERT_EQ(headless.exit_status, 0) << headless.err;
+    EXPECT_EQ(window.out.find("libOSMesa"), std::string::npos) << lab;
+    EXPECT_NE(headless.out.find("libOSMesa"), std::string::npos) << lab;
+    for (const char* gl : {"[libGL.so", "[libGLX", "[libOpenGL", "[libglut"})
+      EXPECT_EQ(headless.out.find(gl), std::string::npos) << lab << "_headless needs " << gl;
+  }
+}
+
+}  // namespace

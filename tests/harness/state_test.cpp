@@ -1,0 +1,102 @@
+// tests/harness/state_test.cpp — the lab State and the shared command line.
+// Expected values follow from the documented contracts in lab.h/options.h.
+#include <gtest/gtest.h>
+
+#include "harness/lab.h"
+#include "harness/options.h"
+
+namespace {
+
+gllab::State sample_state() {
+  return gllab::State({{"default", ""}, {"wireframe", ""}, {"vertex_order", ""}},
+                      {{"spin", 0, -180, 180, ""}, {"lighting", 1, 0, 1, ""}});
+}
+
+TEST(State, StartsOnTheFirstViewWithDefaults) {
+  const gllab::State s = sample_state();
+  EXPECT_EQ(s.view(), "default");
+  EXPECT_EQ(s.get("spin"), 0);
+  EXPECT_TRUE(s.flag("lighting"));
+}
+
+TEST(State, NextViewWrapsBothWays) {
+  gllab::State s = sample_state();
+  s.next_view(-1);
+  EXPECT_EQ(s.view(), "vertex_order");
+  s.next_view(+2);
+  EXPECT_EQ(s.view(), "wireframe");
+}
+
+TEST(State, UnknownViewNamesItAndListsTheValidOnes) {
+  gllab::State s = sample_state();
+  try {
+    s.select_view("wirefram");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown view 'wirefram' (views: default, wireframe, vertex_order)");
+  }
+}
+
+TEST(State, SetFromTextRejectsUnknownKeyMalformedAndOutOfRangeValues) {
+  gllab::State s = sample_state();
+  s.set_from_text("spin=-45.5");
+  EXPECT_EQ(s.get("spin"), -45.5);
+  EXPECT_THROW(s.set_from_text("spn=1"), std::invalid_argument);
+  EXPECT_THROW(s.set_from_text("spin="), std::invalid_argument);
+  EXPECT_THROW(s.set_from_text("spin=1x"), std::invalid_argument);
+  EXPECT_THROW(s.set_from_text("spin=nan"), std::invalid_argument);
+  EXPECT_THROW(s.set_from_text("=1"), std::invalid_argument);
+  EXPECT_THROW(s.set_from_text("spin=180.5"), std::invalid_argument);
+  EXPECT_EQ(s.get("spin"), -45.5) << "a rejected value leaves the old one";
+}
+
+TEST(State, StepClampsToTheRangeAndToggleFlips) {
+  gllab::State s = sample_state();
+  s.step("spin", 170);
+  s.step("spin", 170);
+  EXPECT_EQ(s.get("spin"), 180);
+  s.toggle("lighting");
+  EXPECT_FALSE(s.flag("lighting"));
+}
+
+TEST(State, ArgumentsReproduceTheState) {
+  gllab::State s = sample_state();
+  s.select_view("wireframe");
+  s.set("spin", 30);
+  EXPECT_EQ(s.as_arguments(), "--view wireframe --set spin=30");
+}
+
+TEST(Options, SizeParsesWxHWithinLimits) {
+  int w = 0, h = 0;
+  gllab::parse_size("640x480", w, h);
+  EXPECT_EQ(w, 640);
+  EXPECT_EQ(h, 480);
+  for (const char* bad : {"", "x", "640", "640x", "x480", "-1x5", "0x5", "8193x1", "6 40x480", "1e3x5"})
+    EXPECT_THROW(gllab::parse_size(bad, w, h), gllab::UsageError) << bad;
+  gllab::parse_size("8192x1", w, h);  // kMaxSize is allowed
+  EXPECT_EQ(w, gllab::kMaxSize);
+}
+
+TEST(Options, HeadlessNeedsOutUnlessListingOrHelping) {
+  using gllab::Runner;
+  EXPECT_THROW(gllab::parse_options({"--view", "default"}, Runner::kHeadless), gllab::UsageError);
+  EXPECT_NO_THROW(gllab::parse_options({"--list-views"}, Runner::kHeadless));
+  EXPECT_NO_THROW(gllab::parse_options({"--view", "default"}, Runner::kWindow));
+  EXPECT_THROW(gllab::parse_options({"--out", "x.png"}, Runner::kWindow), gllab::UsageError);
+  EXPECT_THROW(gllab::parse_options({"--out", "dir/"}, Runner::kHeadless), gllab::UsageError);
+}
+
+TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {
+  gllab::Lab lab;
+  lab.id = "test";
+  lab.views = {{"default", ""}};
+  lab.display = [](const gllab::State&) {};
+  lab.keys = {{'h', "mine"}};
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+  lab.keys = {{'a', "one"}, {'a', "two"}};
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+  lab.keys = {{'a', "one"}};
+  EXPECT_NO_THROW(gllab::validate_lab(lab));
+}
+
+}  // namespace

@@ -1,0 +1,30 @@
+// tests/harness/test_support.cpp
+#include "test_support.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+
+namespace gllab::testing {
+
+ScratchDir::ScratchDir(const std::string& tag) {
+  static std::atomic<int> counter{0};
+  path_ = std::filesystem::temp_directory_path() /
+          ("gllab-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+int line_count(const std::string& text) {
+  if (text.empty()) return 0;
+  const auto n = std::count(text.begin(), text.end(), '\n');
+  return static_cast<int>(text.back() == '\n' ? n : n + 1);
+}
+
+}  // namespace gllab::testing

@@ -1,0 +1,44 @@
+// tests/harness/test_support.h — paths and helpers for tests that run the
+// built programs. The build passes the locations in as definitions.
+#pragma once
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "process.h"
+
+namespace gllab::testing {
+
+inline const std::filesystem::path kBinDir = GLLAB_BIN_DIR;          // build/bin
+inline const std::filesystem::path kSourceDir = GLLAB_SOURCE_DIR;    // the repository
+inline const std::filesystem::path kFixtureLab = GLLAB_FIXTURE_LAB;  // tests' own lab
+
+inline std::vector<std::string> lab_ids() {
+  std::vector<std::string> labs;
+  std::stringstream in(GLLAB_LABS);
+  for (std::string lab; std::getline(in, lab, ';');) labs.push_back(lab);
+  return labs;
+}
+
+inline std::string headless(const std::string& lab) { return (kBinDir / (lab + "_headless")).string(); }
+
+/// A fresh directory under the system temp dir, removed by the destructor.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& tag);
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// Number of lines in text (a trailing newline does not start a new line).
+int line_count(const std::string& text);
+
+}  // namespace gllab::testing
