@@ -125,8 +125,8 @@ int main(int argc, char** argv) {
   // say what to do instead.
   // Keep this connection open until the window exists: an X server with no
   // clients left resets, and a connection made during the reset fails.
-  Display* display = XOpenDisplay(nullptr);
-  if (!display) {
+  Display* x_display = XOpenDisplay(nullptr);
+  if (!x_display) {
     return fail(2, "cannot open a window: no X display (DISPLAY='" +
                        std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") +
                        "'); render headless instead: build/bin/" + window.lab.id +
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
   glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
   glutInitWindowSize(window.state->width, window.state->height);
   glutCreateWindow(window.lab.title.c_str());
-  XCloseDisplay(display);
+  XCloseDisplay(x_display);
   if (glGetString(GL_RENDERER) == nullptr) return fail(1, "GL_RENDERER is null: no usable GL context");
   update_title();
   if (window.lab.init) window.lab.init();

@@ -1,0 +1,46 @@
+# gllab — the conventional interface. ./lab installs the Debian packages that
+# are missing and then calls these targets; with the packages present, use
+# make directly.
+#
+#   make             configure (Release) and build into build/
+#   make run         render every lab view headless, compare with
+#                    reference_images/, print a table; renders + heat maps in out/
+#   make test        build and run the whole test suite through CTest
+#   make references  re-render reference_images/ and reference_images/MANIFEST
+#   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
+#   make clean       remove build/, build-sanitize/ and out/
+
+BUILD ?= build
+SANITIZE_BUILD ?= build-sanitize
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+
+.PHONY: all build run test references sanitize clean
+
+all: build
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	$(BUILD)/bin/labrun --out out
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+references: build
+	$(BUILD)/bin/labrun --update-references
+
+# LeakSanitizer: only OSMesa's known per-context leak is suppressed.
+sanitize:
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLLAB_SANITIZE=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/.ci/lsan.supp:print_suppressions=0 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD) $(SANITIZE_BUILD) out
