@@ -39,7 +39,8 @@ std::vector<std::string> help_lines(const Lab& lab, const State& state) {
   lines.push_back(lab.title);
   const View& v = state.views()[state.view_index()];
   lines.push_back("view " + std::to_string(state.view_index() + 1) + "/" +
-                  std::to_string(state.views().size()) + ": " + v.name + " - " + v.what);
+                  std::to_string(state.views().size()) + ": " + v.name);
+  lines.push_back("  " + v.what);
   lines.push_back("");
   lines.push_back("[v]/[V] next/previous view  [h] help");
   lines.push_back("[p] print headless command  [Esc] quit");

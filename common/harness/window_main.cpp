@@ -32,7 +32,8 @@ struct WindowState {
 WindowState* g_window = nullptr;
 
 void update_title() {
-  const std::string title = g_window->lab.title + "  -  " + g_window->state->view();
+  const std::string title = g_window->lab.title + "  -  view: " + g_window->state->view() +
+                            "   ([v] next view, [h] help)";
   glutSetWindowTitle(title.c_str());
 }
 
@@ -78,7 +79,7 @@ void keyboard(unsigned char key, int, int) {
     case 'v': s.next_view(+1); break;
     case 'V': s.next_view(-1); break;
     case 'p':
-      std::printf("%s_headless %s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(),
+      std::printf("./lab render %s %s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(),
                   s.view().c_str());
       std::fflush(stdout);
       return;
