@@ -28,6 +28,7 @@ struct WindowState {
   std::string program;
   std::string capture;                  // --capture FILE: write the first frame, exit
   std::vector<std::string> errors;      // shown on screen until the next key
+  int exit_status = 0;
 };
 WindowState* g_window = nullptr;
 
@@ -35,6 +36,13 @@ void update_title() {
   const std::string title = g_window->lab.title + "  -  view: " + g_window->state->view() +
                             "   ([v] next view, [h] help)";
   glutSetWindowTitle(title.c_str());
+}
+
+// Leave glutMainLoop and return from main(), so freeglut destroys the window
+// and its GL context (std::exit would leave them to the leak checker).
+void quit(int status) {
+  g_window->exit_status = status;
+  glutLeaveMainLoop();
 }
 
 void display() {
@@ -59,7 +67,8 @@ void display() {
       std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.what());
       status = 1;
     }
-    std::exit(status);
+    quit(status);
+    return;
   }
   glutSwapBuffers();
 }
@@ -74,7 +83,7 @@ void keyboard(unsigned char key, int, int) {
   gllab::State& s = *w.state;
   w.errors.clear();
   switch (key) {
-    case 27: std::exit(0);
+    case 27: quit(0); return;
     case 'h': s.help = !s.help; break;
     case 'v': s.next_view(+1); break;
     case 'V': s.next_view(-1); break;
@@ -138,6 +147,7 @@ int main(int argc, char** argv) {
   int glut_argc = 1;  // our options are parsed already; GLUT sees none of them
   glutInit(&glut_argc, argv);
   glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
+  glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
   glutInitWindowSize(window.state->width, window.state->height);
   glutCreateWindow(window.lab.title.c_str());
   XCloseDisplay(x_display);
@@ -149,5 +159,5 @@ int main(int argc, char** argv) {
   glutReshapeFunc(reshape);
   glutKeyboardFunc(keyboard);
   glutMainLoop();
-  return 0;
+  return window.exit_status;
 }

@@ -103,9 +103,15 @@ TEST_P(EveryLabWindow, DefaultViewUnderXvfbEqualsHeadlessRender) {
   ScratchDir dir("window");
   const std::string lab = GetParam();
   const auto window_png = dir / "window.png", headless_png = dir / "headless.png";
+  // Mesa's GLX driver leaks ~1 MiB per window (valgrind: allocated under
+  // glutCreateWindow in libGLX_mesa/swrast_dri.so, and 112 bytes under
+  // glBitmap), and it is unloaded before LeakSanitizer runs, so its frames
+  // cannot be named in a suppression. Leak checking is off for the window
+  // process alone; AddressSanitizer and UBSan still check it.
   const gllab::ProcessResult w = run_process(
       {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", (kBinDir / lab).string(),
-       "--capture", window_png.string()});
+       "--capture", window_png.string()},
+      {"ASAN_OPTIONS=detect_leaks=0"});
   ASSERT_EQ(w.exit_status, 0) << w.out << w.err;
   ASSERT_EQ(run_process({headless(lab), "--out", headless_png.string()}).exit_status, 0);
   const gllab::Comparison c = gllab::compare_images(gllab::read_png(headless_png.string()),
