@@ -11,11 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "test_images.h"
+
 using gllab::Comparison;
 using gllab::Image;
 using gllab::Tolerance;
 
 namespace {
+
+using gllab::testing::random_image;
+using gllab::testing::rgba_at;
 
 // Hand-computed results are exact fractions; the PSNR literals are rounded to
 // the digits written, so they get a looser tolerance.
@@ -31,19 +36,6 @@ Image filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t
       p[0] = r, p[1] = g, p[2] = b, p[3] = a;
     }
   return img;
-}
-
-Image random_image(int width, int height, unsigned seed) {
-  Image img(width, height);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> byte(0, 255);
-  for (auto& b : img.rgba) b = static_cast<std::uint8_t>(byte(rng));
-  return img;
-}
-
-std::vector<std::uint8_t> rgba_at(const Image& img, int x, int y) {
-  const std::uint8_t* p = img.pixel(x, y);
-  return std::vector<std::uint8_t>(p, p + 4);
 }
 
 // --- compare_images ------------------------------------------------------------

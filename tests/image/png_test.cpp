@@ -3,6 +3,7 @@
 // be loud, one line, and leave nothing behind. Scratch files live in a fresh
 // directory under the system temp dir, removed after each test.
 #include "image/image.h"
+#include "test_images.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -31,18 +32,12 @@ using gllab::ImageError;
 
 namespace {
 
+using gllab::testing::random_image;
+using gllab::testing::rgba_at;
+
 using Bytes = std::vector<std::uint8_t>;
 
 // --- Helpers -------------------------------------------------------------------
-
-// Each byte uniform in 0..255, from a fixed seed so a failure can be replayed.
-Image random_image(int width, int height, unsigned seed) {
-  Image img(width, height);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> byte(0, 255);
-  for (auto& b : img.rgba) b = static_cast<std::uint8_t>(byte(rng));
-  return img;
-}
 
 Bytes read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -153,11 +148,6 @@ void write_raw_png(const std::string& path, const RawPng& raw) {
 }
 
 // The RGBA of pixel (x,y) as a vector, so gtest prints it on failure.
-Bytes rgba_at(const Image& img, int x, int y) {
-  const std::uint8_t* p = img.pixel(x, y);
-  return Bytes(p, p + 4);
-}
-
 // --- Fixture: a fresh scratch directory per test --------------------------------
 
 class PngFiles : public ::testing::Test {
