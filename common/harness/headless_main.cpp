@@ -4,6 +4,7 @@
 // file; 2 bad command line. Every failure is one line on stderr.
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ int main(int argc, char** argv) {
     const gllab::Lab lab = gllab::define_lab();
     gllab::validate_lab(lab);
     gllab::Options options;
-    gllab::State state({{"default", ""}}, {});
+    std::optional<gllab::State> parsed;
     try {
       options = gllab::parse_options(std::vector<std::string>(argv + 1, argv + argc),
                                      gllab::Runner::kHeadless);
@@ -37,11 +38,12 @@ int main(int argc, char** argv) {
         for (const gllab::View& v : lab.views) std::printf("%s\n", v.name.c_str());
         return 0;
       }
-      state = gllab::make_state(lab, options);
+      parsed = gllab::make_state(lab, options);
     } catch (const gllab::UsageError& e) {
       return fail(2, e.what());
     }
 
+    const gllab::State& state = *parsed;
     gllab::OffscreenContext context(state.width, state.height);
     if (options.info) {
       std::printf("renderer: %s\ngl_version: %s\nglu_version: %s\n", context.renderer().c_str(),

@@ -66,7 +66,9 @@ int State::integer(const std::string& name) const {
 }
 
 void State::set(const std::string& name, double value) {
-  auto& p = const_cast<Param&>(find(name));
+  find(name);  // throws for an unknown name
+  Param& p = *std::find_if(params_.begin(), params_.end(),
+                           [&](const Param& q) { return q.name == name; });
   if (!(value >= p.lo && value <= p.hi))  // also rejects NaN
     throw std::invalid_argument("parameter " + name + "=" + format_number(value) +
                                 " is out of range [" + format_number(p.lo) + ", " +

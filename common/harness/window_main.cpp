@@ -5,6 +5,7 @@
 #include <X11/Xlib.h>
 #include <GL/freeglut.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -49,6 +50,7 @@ void display() {
   WindowState& w = *g_window;
   gllab::draw_frame(w.lab, *w.state);
   for (std::string& e : gllab::take_frame_errors()) {
+    if (std::find(w.errors.begin(), w.errors.end(), e) != w.errors.end()) continue;  // shown already
     std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.c_str());
     w.errors.push_back(std::move(e));
   }
