@@ -8,13 +8,17 @@
 #   make test        build and run the whole test suite through CTest
 #   make references  re-render reference_images/ and reference_images/MANIFEST
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
-#   make clean       remove build/, build-sanitize/ and out/
+#   make bench       build bench/ in build-bench/ (Release, GLLAB_BENCH=ON) and run
+#                    spline_bench against GLU, SISL and OpenCASCADE; flags for it
+#                    go in BENCH_ARGS, e.g. make bench BENCH_ARGS=--benchmark_filter=curve
+#   make clean       remove build/, build-sanitize/, build-bench/ and out/
 
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
+BENCH_BUILD ?= build-bench
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build run test references sanitize clean
+.PHONY: all build run test references sanitize bench clean
 
 all: build
 
@@ -42,5 +46,11 @@ sanitize:
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS)
 
+# A separate build directory: the normal build never needs the peers (bench/README.md).
+bench:
+	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DGLLAB_BENCH=ON
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench
+	$(BENCH_BUILD)/bin/spline_bench $(BENCH_ARGS)
+
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) out
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(BENCH_BUILD) out
