@@ -750,7 +750,7 @@ class PatchTessellator {
   void prepare_trims(const std::vector<TrimLoop>& trims) {
     trimmed_ = true;
     // Piece-level checks with trim.h's messages (closure, domain, curves).
-    validate_trim_loops(trims, dom_);
+    validate_trim_loops(trims, dom_, kTrimFlattenTolerance * std::max(dom_.u1 - dom_.u0, dom_.v1 - dom_.v0));
 
     // Curve pieces: flattened on the surface (3D chordal error), or for fixed
     // steps in (u, v) to a small fraction of a cell.
@@ -1426,13 +1426,15 @@ class PatchTessellator {
       return norm(evaluate(q.x, q.y).point - p) <= accept;
     };
     const int n = static_cast<int>(m.triangles.size());
-    for (int t = 0; t < n; ++t) attach(t);
     std::vector<std::uint64_t> work;
     for (int t = 0; t < n; ++t) {
       const auto& tri = m.triangles[t];
       if (smallest_angle(tri[0], tri[1], tri[2]) < kSliverAngle)
         for (int k = 0; k < 3; ++k) work.push_back(key(tri[k], tri[(k + 1) % 3]));
     }
+    if (work.empty()) return;
+    faces.reserve(3 * m.triangles.size() / 2 + 16);
+    for (int t = 0; t < n; ++t) attach(t);
     for (std::size_t budget = 4 * m.triangles.size() + 16; !work.empty() && budget > 0; --budget) {
       const std::uint64_t e = work.back();
       work.pop_back();

@@ -42,11 +42,11 @@ namespace gllab::spline {
 // ---- curves ------------------------------------------------------------------
 
 /// How far a chord may be from its curve piece C(t), t in [a, b]:
-///  - Chordal: the distance from C(t) to the chord segment (the geometric error
-///    a viewer sees; what GLU_PATH_LENGTH-style sampling controls);
+///  - Chordal: the distance from C(t) to the chord segment (the geometric
+///    error a viewer sees);
 ///  - Parametric: the distance from C(t) to the chord point at the same
-///    fraction (t - a) / (b - a) (GLU_PARAMETRIC_ERROR). Never smaller than
-///    Chordal; it also bounds how far a texture or a neighbouring patch slides.
+///    fraction (t - a) / (b - a) (what GLU_OBJECT_PARAMETRIC_ERROR bounds).
+///    Never smaller than Chordal; it also bounds how far a texture slides.
 enum class ChordError { Chordal, Parametric };
 
 inline constexpr int kMinFlattenDepth = 2;    // always at least 2^2 = 4 segments
@@ -89,11 +89,11 @@ std::vector<CurveSample> flatten_curve(const std::function<Vec3(double)>& curve,
 
 // ---- surfaces --------------------------------------------------------------------
 
-/// What a SurfaceEvaluator returns at (u, v). normal must be unit length
-/// (or zero: then it is computed from du x dv, or, if those are zero too, from
-/// central differences of the point). du, dv (the partials S_u, S_v) are
-/// optional; when present they let the edge sampling see twist (see
-/// tessellate_surface).
+/// What a SurfaceEvaluator returns at (u, v). normal: the surface normal
+/// (normalised by the tessellator; if zero, it is taken from du x dv, then
+/// from central differences of the point, then from a point a hair inwards,
+/// as at a pole). du, dv (the partials S_u, S_v) are optional; when present
+/// they let the edge sampling see twist (see tessellate_surface).
 struct SurfaceSample {
   Vec3 point;
   Vec3 normal;
@@ -203,7 +203,13 @@ inline constexpr double kWeldTolerance = 1e-9;
 /// vertices within weld_tolerance of each other become one (the first patch's
 /// normal and (u, v) are kept), and triangles that collapse are dropped.
 /// Patches sharing an edge share its samples (see tessellate_surface), so the
-/// welded mesh has no cracks and no T-junctions along that edge.
+/// welded mesh has no cracks and no T-junctions along that edge. The samples
+/// are bit-identical when both patches evaluate the edge identically (one
+/// surface split along a knot or a parameter value); separately written
+/// patches (e.g. the two halves of a subdivided Bézier net) agree up to
+/// round-off, which welding absorbs, unless a flatness test lands exactly on
+/// its threshold. The twist term assumes the same parameter width across
+/// the edge on both sides (as in a split domain).
 Mesh tessellate_patches(const std::vector<Patch>& patches, const TessellationOptions& options,
                         double weld_tolerance = kWeldTolerance);
 

@@ -19,6 +19,7 @@
 #include "spline/bspline.h"
 #include "spline/errors.h"
 #include "spline/nurbs.h"
+#include "spline/surface.h"
 #include "spline/tessellate.h"
 #include "spline/trim.h"
 
@@ -35,8 +36,15 @@ constexpr double kUnitLengthEps = 1e-12;
 constexpr double kVertexNormalAngleDegrees = 1e-6;
 /// The tilt DESIGN.md counts for GLU's slivers: faces more than 20° off the surface.
 constexpr double kSliverTiltDegrees = 20;
-/// Round-off allowance when comparing a measured error with the tolerance.
+/// Round-off allowance when comparing a measured error or area with its bound
+/// (sums of a few thousand products of numbers near 1).
 constexpr double kRoundOff = 1e-12;
+/// DESIGN.md: GLU's meshes of coarsely trimmed bicubics were 5-23 % too large;
+/// a tessellator that honours its tolerance must stay far below that.
+constexpr double kMaxTrimmedAreaError = 0.01;
+/// The NURBS circle hole of examples/trimmed_nurbs_surface.json is flattened
+/// to at least this share of the disc's area at every tolerance tested.
+constexpr double kHolePolygonMinShare = 0.9;
 
 // ---- analytic curves -------------------------------------------------------------------
 
@@ -298,7 +306,9 @@ TEST(FlattenCurve, MaxDepthStopsAtAJump) {
   o.max_depth = 12;
   const auto s = flatten_curve(step, 0, 1, o);
   EXPECT_LE(s.size(), (1u << 12) + 1);
-  EXPECT_LE(s.size(), 2u * 12 + 8);  // only the intervals around the jump are split
+  // Only the interval holding the jump is split at each level: 4 forced
+  // segments (min_depth 2), then two more breakpoints per level below that.
+  EXPECT_LE(s.size(), 4u + 1 + 2 * (12 - kMinFlattenDepth));
 }
 
 TEST(FlattenCurve, SameCurveSameSamples) {
@@ -442,7 +452,7 @@ TEST(TessellateSurface, PlaneNeedsOnlyTheMinimumDepth) {
   // A plane is flat at once: 4 x 4 cells (kMinQuadtreeDepth = 2), 32 triangles, area 6.
   const Mesh m = tessellate_surface(plane, {0, 3, 0, 2}, TessellationOptions::adaptive(1e-6));
   EXPECT_EQ(m.triangles.size(), 32u);
-  EXPECT_NEAR(mesh_area(m), 6, 1e-12);
+  EXPECT_NEAR(mesh_area(m), 6, kRoundOff);
 }
 
 TEST(TessellateSurface, BadInputIsRejected) {
@@ -483,7 +493,7 @@ TEST(TessellateSurface, PlanarSquareWithHoleHasExactArea) {
   const std::vector<TrimLoop> trims{square_loop(0.1, 0.1, 0.9, 0.9, true), square_loop(0.3, 0.3, 0.6, 0.6, false)};
   for (const auto& opt : {TessellationOptions::adaptive(1e-3), TessellationOptions::fixed_steps(5, 7)}) {
     const Mesh m = tessellate_surface(plane, {0, 1, 0, 1}, opt, trims);
-    EXPECT_NEAR(mesh_area(m), 0.55, 1e-12);
+    EXPECT_NEAR(mesh_area(m), 0.55, kRoundOff);
     EXPECT_TRUE(consistently_oriented_manifold(m));
     // The mesh boundary is the trim: every boundary edge lies on one of the 8 sides.
     for (const auto& e : boundary_edges(m)) {
@@ -522,8 +532,8 @@ TEST(TessellateSurface, PlanarSquareWithCircleHoleMatchesAnalyticArea) {
   for (double tol : {1e-2, 1e-3, 1e-4}) {
     const Mesh m = tessellate_surface(plane, {0, 1, 0, 1}, TessellationOptions::adaptive(tol), trims);
     const double area = mesh_area(m);
-    EXPECT_GE(area, 0.64 - pi_r2 - 1e-12) << tol;
-    EXPECT_LE(area, 0.64 - pi_r2 * (1 - 2 * tol / r) + 1e-12) << tol;
+    EXPECT_GE(area, 0.64 - pi_r2 - kRoundOff) << tol;
+    EXPECT_LE(area, 0.64 - pi_r2 * (1 - 2 * tol / r) + kRoundOff) << tol;
     EXPECT_TRUE(consistently_oriented_manifold(m));
     const MeshReport rep = measure(m, plane);
     print("plane, circle hole, tol " + num(tol), m, rep);
@@ -565,7 +575,7 @@ TEST(TessellateSurface, CoarsePolylineTrimMakesNoSlivers) {
   // Here the trim edges are refined and the cells cut, so every triangle is
   // within the tolerance, none tilts by 20°, and the area matches the
   // integral of |S_u x S_v| (Gauss-Legendre, 8 points on each of 32 x 32
-  // sub-squares) to well under 1 %.
+  // sub-squares) to within kMaxTrimmedAreaError.
   const Bicubic b;
   const std::vector<TrimLoop> trims{square_loop(0.1, 0.15, 0.9, 0.85, true), square_loop(0.4, 0.35, 0.65, 0.6, false)};
   const auto area_of = [&](double x0, double x1, double y0, double y1) {
@@ -596,7 +606,7 @@ TEST(TessellateSurface, CoarsePolylineTrimMakesNoSlivers) {
     std::cout << "    area error " << error * 100 << " %\n";
     EXPECT_LE(r.max_deviation, tol + kRoundOff);
     EXPECT_EQ(r.faces_tilted_over_20, 0);
-    EXPECT_LT(std::abs(error), 0.01);
+    EXPECT_LT(std::abs(error), kMaxTrimmedAreaError);
     EXPECT_TRUE(consistently_oriented_manifold(m));
   }
 }
@@ -659,7 +669,7 @@ TEST(TessellateSurface, RandomTrimsKeepAreaManifoldAndTolerance) {
         EXPECT_GT(a, 0) << "case " << c;
         area += a;
       }
-      EXPECT_NEAR(area, want, 1e-12) << "case " << c;
+      EXPECT_NEAR(area, want, kRoundOff) << "case " << c;
       EXPECT_TRUE(consistently_oriented_manifold(m)) << "case " << c;
       for (const auto& e : boundary_edges(m)) {
         double best = 1;
@@ -668,12 +678,58 @@ TEST(TessellateSurface, RandomTrimsKeepAreaManifoldAndTolerance) {
             const Vec2 a = p[k], b = p[(k + 1) % p.size()];
             best = std::min(best, std::max(distance_to_segment_2d(m.uv[e[0]], a, b), distance_to_segment_2d(m.uv[e[1]], a, b)));
           }
-        EXPECT_LT(best, 1e-12) << "case " << c << ": " << num(m.uv[e[0]]) << "-" << num(m.uv[e[1]]);
+        EXPECT_LT(best, kRoundOff) << "case " << c << ": " << num(m.uv[e[0]]) << "-" << num(m.uv[e[1]]);
       }
       if (opt.sampling == Sampling::Adaptive) {
         EXPECT_LE(measure(m, surface).max_deviation, opt.tolerance + kRoundOff) << "case " << c;
       }
     }
+  }
+}
+
+TEST(TessellateSurface, ExampleTrimmedNurbsSurfaceEndToEnd) {
+  // examples/trimmed_nurbs_surface.json, typed in: a rational bicubic hill
+  // (weights 2 in the middle) trimmed to [0.05, 0.95]^2 by a closed polyline
+  // and holed by the exact NURBS circle of radius 0.2 about (0.5, 0.5), run
+  // clockwise. Evaluated by surface.h (surface_evaluator), so this checks the
+  // whole path a lab takes; the true surface is surface_point/surface_normal.
+  BsplineSurface s;
+  s.p = s.q = 3;
+  s.U = s.V = {0, 0, 0, 0, 1, 1, 1, 1};
+  s.nu = s.nv = 4;
+  const double z[4][4] = {{0, 0, 0, 0}, {0, 1.5, 1.5, 0}, {0, 1.5, 1.5, 0}, {0, 0, 0, 0}};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      s.P.push_back({static_cast<double>(i), static_cast<double>(j), z[i][j]});
+      s.w.push_back((i == 1 || i == 2) && (j == 1 || j == 2) ? 2.0 : 1.0);
+    }
+  s.trims.push_back(closed_loop({{0.05, 0.05}, {0.95, 0.05}, {0.95, 0.95}, {0.05, 0.95}}));
+  BsplineCurve hole;
+  hole.p = 2;
+  hole.U = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+  hole.P = {{0.7, 0.5, 0}, {0.7, 0.3, 0}, {0.5, 0.3, 0}, {0.3, 0.3, 0}, {0.3, 0.5, 0},
+            {0.3, 0.7, 0}, {0.5, 0.7, 0}, {0.7, 0.7, 0}, {0.7, 0.5, 0}};
+  const double h = std::sqrt(0.5);
+  hole.w = {1, h, 1, h, 1, h, 1, h, 1};
+  hole.dimension = 2;
+  s.trims.push_back(TrimLoop{{TrimPiece{{}, hole}}});
+  const SurfaceEvaluator exact = [&s](double u, double v) {
+    return SurfaceSample{surface_point(s, u, v), surface_normal(s, u, v), {}, {}};
+  };
+  for (double tol : {1e-2, 1e-3, 1e-4}) {
+    const Mesh m = tessellate_surface(surface_evaluator(s), uv_domain(s), TessellationOptions::adaptive(tol), s.trims);
+    const MeshReport r = measure(m, exact);
+    print("example trimmed NURBS surface, tol " + num(tol), m, r);
+    EXPECT_LE(r.max_deviation, tol + kRoundOff);
+    EXPECT_LE(r.max_vertex_normal_angle, kVertexNormalAngleDegrees);
+    EXPECT_EQ(r.faces_tilted_over_20, 0);
+    EXPECT_TRUE(consistently_oriented_manifold(m));
+    // In (u, v) the mesh covers the square minus the hole's inscribed polygon:
+    // at least 0.81 - pi 0.2^2, and the hole polygon is most of the disc.
+    double uv_area = 0;
+    for (const auto& t : m.triangles) uv_area += cross(m.uv[t[1]] - m.uv[t[0]], m.uv[t[2]] - m.uv[t[0]]) / 2;
+    EXPECT_GE(uv_area, 0.81 - kPi * 0.04);
+    EXPECT_LE(uv_area, 0.81 - kPi * 0.04 * kHolePolygonMinShare);
   }
 }
 
@@ -699,6 +755,27 @@ bool only_outer_boundary(const Mesh& m, UvDomain outer) {
     if (!along) return false;
   }
   return true;
+}
+
+TEST(Weld, MergesSharedVerticesAndDropsCollapsedTriangles) {
+  // Two triangles of the unit square given as separate meshes: welded, they
+  // share the diagonal (4 vertices, the outline = 4 boundary edges). A third
+  // mesh whose triangle collapses to a segment after welding is dropped.
+  Mesh a, b, c;
+  a.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+  b.positions = {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  c.positions = {{0, 0, 0}, {1, 0, 0}, {1, kWeldTolerance / 2, 0}};
+  for (Mesh* m : {&a, &b, &c}) {
+    m->normals.assign(3, {0, 0, 1});
+    m->uv.assign(3, {});
+    m->triangles = {{0, 1, 2}};
+  }
+  const Mesh w = weld({a, b, c});
+  EXPECT_EQ(w.positions.size(), 4u);
+  EXPECT_EQ(w.triangles.size(), 2u);
+  EXPECT_EQ(boundary_edges(w).size(), 4u);
+  EXPECT_DOUBLE_EQ(mesh_area(w), 1);
+  EXPECT_THROW(weld({a}, -1), std::invalid_argument);
 }
 
 TEST(TessellatePatches, SplitDomainSharesEdgeVerticesAndWeldsWithoutCracks) {
@@ -791,7 +868,7 @@ TEST(TessellatePatches, SubdividedBezierHalvesWeldWithoutCracks) {
     std::size_t inner = 0;
     for (const auto& e : boundary_edges(m)) {
       const Vec3 p = m.positions[e[0]], q = m.positions[e[1]];
-      if (std::abs(p.x - 3) < 1e-9 && std::abs(q.x - 3) < 1e-9) ++inner;
+      if (std::abs(p.x - 3) <= kWeldTolerance && std::abs(q.x - 3) <= kWeldTolerance) ++inner;
     }
     EXPECT_EQ(inner, 0u) << "tol " << tol;
     EXPECT_TRUE(consistently_oriented_manifold(m));
