@@ -817,10 +817,11 @@ DeBoorConstruction de_boor(const BsplineCurve& curve, double u) {
 //
 // curve_points() computes what curve_point() and curve_derivs(u, 1) compute --
 // A2.1 FindSpan, A2.2 BasisFuns, the sums of A3.1 / A4.1 and A4.2 -- for many
-// sorted parameters at once. The per-point functions above stay the reference
-// implementation: they are the book's algorithms as printed. Here the same
-// arithmetic is rearranged so that the machine can go fast (bench/README.md
-// has the measurements):
+// sorted parameters at once. The per-point functions above (curve_point,
+// homogeneous_curve_point, basis_funs_raw) stay the reference implementation:
+// they are the book's algorithms as printed, one point at a time. Here the
+// same arithmetic is rearranged so that the machine can go fast
+// (bench/README.md has the measurements):
 //
 // 1. Span runs instead of a span search per point. The parameters are sorted,
 //    so each knot span i owns a contiguous run u[begin..end) of them: A2.1 is
@@ -877,17 +878,23 @@ void check_sorted_params_detailed(const std::vector<double>& us, ParamInterval d
   }
 }
 
-/// The same check in one branch-free pass (it vectorises; with 10^5
-/// parameters the detailed loop above cost as much as evaluating them).
-/// u[k] >= u[k-1] is false when either is NaN, and a sorted list whose ends
-/// lie in the (finite) domain has every value in it: so this accepts exactly
-/// what the detailed check accepts, and the detailed check names the culprit.
+/// How many k have !(u[k] >= u[k-1]): a count without a branch, which GCC
+/// vectorises (a loop that stops at the first bad parameter cannot be
+/// vectorised, and the detailed loop above cost as much as evaluating the
+/// points); compiled once per instruction set like the kernels below.
+GLLAB_SPLINE_CLONES std::size_t count_unsorted(const double* u, std::size_t count) {
+  std::size_t bad = 0;
+  for (std::size_t k = 1; k < count; ++k) bad += !(u[k] >= u[k - 1]);
+  return bad;
+}
+
+/// The check in one fast pass. u[k] >= u[k-1] is false when either is NaN,
+/// and a sorted list whose ends lie in the (finite) domain has every value in
+/// it: so this accepts exactly what the detailed check accepts, and the
+/// detailed check names the culprit.
 void check_sorted_params(const std::vector<double>& us, ParamInterval dom) {
   if (us.empty()) return;
-  const double* u = us.data();
-  unsigned sorted = 1;
-  for (std::size_t k = 1; k < us.size(); ++k) sorted &= static_cast<unsigned>(u[k] >= u[k - 1]);
-  if (sorted && us.front() >= dom.a && us.back() <= dom.b) return;
+  if (count_unsorted(us.data(), us.size()) == 0 && us.front() >= dom.a && us.back() <= dom.b) return;
   check_sorted_params_detailed(us, dom);
   fail("curve_points: invalid parameters");  // not reached: the detailed check throws
 }
@@ -939,8 +946,8 @@ void prepare_span(const BsplineCurve& c, int i, bool derivs, SpanData<Pt>& s) {
 /// The loop body is A2.2 with the span's reciprocals, then A3.1 (Vec3) or
 /// A4.1 (Vec4, one reciprocal of w), then A4.2 for C'.
 template <int P, class Pt, bool kDerivs>
-[[gnu::always_inline]] inline void eval_run(const SpanData<Pt>& s, int p_runtime, const double* __restrict u, Vec3* __restrict out,
-                     Vec3* __restrict der, std::size_t count) {
+[[gnu::always_inline]] inline void eval_run(const SpanData<Pt>& s, int p_runtime, const double* __restrict u,
+                                            Vec3* __restrict out, Vec3* __restrict der, std::size_t count) {
   constexpr int W = P > 0 ? P : kMaxDegree;  // array sizes
   const int p = P > 0 ? P : p_runtime;
   for (std::size_t k = 0; k < count; ++k) {
@@ -981,7 +988,8 @@ template <int P, class Pt, bool kDerivs>
       const Vec3 C{A.x * iw, A.y * iw, A.z * iw};
       out[k] = C;
       // A4.2 with k = 1: C' = (A' - w' C) / w.
-      if constexpr (kDerivs) der[k] = {(dA.x - dA.w * C.x) * iw, (dA.y - dA.w * C.y) * iw, (dA.z - dA.w * C.z) * iw};
+      if constexpr (kDerivs)
+        der[k] = {(dA.x - dA.w * C.x) * iw, (dA.y - dA.w * C.y) * iw, (dA.z - dA.w * C.z) * iw};
     } else {
       out[k] = A;
       if constexpr (kDerivs) der[k] = dA;
@@ -992,7 +1000,8 @@ template <int P, class Pt, bool kDerivs>
 /// Walks the runs of sorted parameters span by span and evaluates each run
 /// with the kernel for the curve's degree.
 template <class Pt, bool kDerivs>
-[[gnu::always_inline]] inline void eval_runs(const BsplineCurve& c, const double* u, std::size_t count, Vec3* out, Vec3* der) {
+[[gnu::always_inline]] inline void eval_runs(const BsplineCurve& c, const double* u, std::size_t count, Vec3* out,
+                                             Vec3* der) {
   const int p = c.p;
   const int n = c.n();
   const double* U = c.U.data();
@@ -1006,17 +1015,17 @@ template <class Pt, bool kDerivs>
     const std::size_t end =
         span == last ? count : static_cast<std::size_t>(std::lower_bound(u + k, u + count, U[span + 1]) - u);
     prepare_span(c, span, kDerivs, s);
-    const double* uk = u + k;
-    Vec3* ok = out + k;
-    Vec3* dk = kDerivs ? der + k : nullptr;
+    const double* run_u = u + k;
+    Vec3* run_out = out + k;
+    Vec3* run_der = kDerivs ? der + k : nullptr;
     const std::size_t m = end - k;
     switch (p) {
-      case 1: eval_run<1, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
-      case 2: eval_run<2, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
-      case 3: eval_run<3, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
-      case 4: eval_run<4, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
-      case 5: eval_run<5, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
-      default: eval_run<0, Pt, kDerivs>(s, p, uk, ok, dk, m); break;
+      case 1: eval_run<1, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
+      case 2: eval_run<2, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
+      case 3: eval_run<3, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
+      case 4: eval_run<4, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
+      case 5: eval_run<5, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
+      default: eval_run<0, Pt, kDerivs>(s, p, run_u, run_out, run_der, m); break;
     }
     k = end;
     if (k == count) break;

@@ -166,6 +166,9 @@ DeBoorConstruction de_boor(const BsplineCurve& curve, double u);
 /// Batched evaluation at non-decreasing parameters inside the domain: out[k] =
 /// C(sorted_u[k]). Walks the spans forward (no binary search per point) and
 /// checks the curve once. Throws if sorted_u decreases or leaves the domain.
+/// Agrees with curve_point() to rounding, not bit for bit (it multiplies by
+/// per-span reciprocals where A2.2 divides), and gives the same bits on every
+/// CPU; how it is made fast is explained in bspline.cpp ("batched evaluation").
 void curve_points(const BsplineCurve& curve, const std::vector<double>& sorted_u, std::vector<Vec3>& out);
 /// The same with first derivatives: derivs[k] = C'(sorted_u[k]).
 void curve_points(const BsplineCurve& curve, const std::vector<double>& sorted_u, std::vector<Vec3>& out,

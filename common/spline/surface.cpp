@@ -795,7 +795,7 @@ BsplineSurface revolved_surface(const BsplineCurve& profile) {
 //    (a tensor-product surface is a curve of curves, seed 000 §1.7). Every
 //    point of the row is then a short sum along v over q + 1 of them.
 // 3. The points of a row whose v lie in one knot span form a run; the run's
-//    q + 1 blended points are loaded once and grid_run<Q> evaluates the run
+//    q + 1 blended points are loaded once and grid_run<Qd> evaluates the run
 //    with the degree fixed at compile time (q = 1..5; grid_run<0> reads it
 //    at run time). The v basis is stored component-wise (one array per l) so
 //    that the loop reads contiguous arrays, and the loop body has no branch:
@@ -829,6 +829,41 @@ struct BasisTable {
   double deriv(int l, std::size_t k) const { return dN[uz(l) * count + k]; }
 };
 
+/// A2.3 DersBasisFuns (The NURBS Book, p. 72) to first order, without the
+/// allocations of ders_basis_funs(i, u, p, 1, U) but with its operations in
+/// its order, so the values are the same bits: N[r] = N_{i-p+r,p}(u) by A2.2
+/// (with its divisions), and dN[r] = p (N_{i-p+r,p-1} / (U[i+r] - U[i+r-p])
+/// - N_{i-p+r+1,p-1} / (U[i+r+1] - U[i+r+1-p])), from the degree p - 1
+/// values of the step before last. Needs 1 <= p <= kMaxDegree.
+void first_ders_basis_funs(int i, double u, int p, const double* U, double* N, double* dN) {
+  double left[kMaxDegree + 1], right[kMaxDegree + 1];
+  double Nlow[kMaxDegree + 1];   // degree p - 1
+  double diff[kMaxDegree + 1];   // right[r+1] + left[p-r] of the last step (A2.3's ndu[p][r])
+  N[0] = 1.0;
+  Nlow[0] = 1.0;
+  for (int j = 1; j <= p; ++j) {
+    left[j] = u - U[i + 1 - j];
+    right[j] = U[i + j] - u;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      const double d = right[r + 1] + left[j - r];
+      if (j == p) diff[r] = d;
+      const double temp = N[r] / d;
+      N[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    N[j] = saved;
+    if (j == p - 1)
+      for (int r = 0; r <= j; ++r) Nlow[r] = N[r];
+  }
+  for (int r = 0; r <= p; ++r) {
+    double dk = 0.0;
+    if (r >= 1) dk = (1.0 / diff[r - 1]) * Nlow[r - 1];
+    if (r <= p - 1) dk += (-(1.0 / diff[r])) * Nlow[r];
+    dN[r] = dk * p;
+  }
+}
+
 BasisTable basis_table(int num_points, int degree, const std::vector<double>& knots, const std::vector<double>& params,
                        bool derivatives, const std::string& what, const char* name) {
   const ParamInterval dom = domain(degree, knots);
@@ -839,7 +874,7 @@ BasisTable basis_table(int num_points, int degree, const std::vector<double>& kn
   t.span.resize(params.size());
   t.N.resize(params.size() * w);
   if (derivatives) t.dN.resize(params.size() * w);
-  std::array<double, kMaxDegree + 1> N{};
+  std::array<double, kMaxDegree + 1> N{}, dN{};
   for (std::size_t k = 0; k < params.size(); ++k) {
     const double x = params[k];
     if (!(x >= dom.a && x <= dom.b))
@@ -847,10 +882,10 @@ BasisTable basis_table(int num_points, int degree, const std::vector<double>& kn
            "]");
     t.span[k] = find_span(num_points - 1, degree, x, knots);
     if (derivatives) {
-      const std::vector<std::vector<double>> ders = ders_basis_funs(t.span[k], x, degree, 1, knots);
+      first_ders_basis_funs(t.span[k], x, degree, knots.data(), N.data(), dN.data());
       for (std::size_t l = 0; l < w; ++l) {
-        t.N[l * t.count + k] = ders[0][l];
-        t.dN[l * t.count + k] = ders[1][l];
+        t.N[l * t.count + k] = N[l];
+        t.dN[l * t.count + k] = dN[l];
       }
     } else {
       basis_funs(t.span[k], x, degree, knots, N.data());
@@ -888,16 +923,17 @@ struct GridRun {
   std::size_t count = 0;
 };
 
-/// The point S at the run's b-th parameter and, if kNormals, the normal
-/// direction n = (w Su) x (w Sv), |n|^2 and whether it passes the degenerate
-/// test. Qd > 0: the degree along v, fixed at compile time; Qd == 0: r.q.
-/// Both give the same bits (the same operations in the same order).
+/// A point S and, with normals, the normal direction n = (w Su) x (w Sv),
+/// |n|^2 and the degenerate test's bound.
 struct GridPoint {
   Vec3 S, n;
   double nn = 0, limit = 0;
   bool ok() const { return nn > limit; }  // false for NaN too
 };
 
+/// The run's b-th point. Qd > 0: the degree along v, fixed at compile time;
+/// Qd == 0: r.q. Both give the same bits (the same operations in the same
+/// order), and so does every instruction set.
 template <int Qd, bool kNormals>
 [[gnu::always_inline]] inline GridPoint grid_point(const GridRun& r, std::size_t b) {
   const int q = Qd > 0 ? Qd : r.q;
@@ -929,17 +965,19 @@ template <int Qd, bool kNormals>
   return g;
 }
 
-/// Evaluates one run: out[b] = S and, if kNormals, nrm[b] = n / |n|. Returns
-/// 1 + the last b whose normal failed the degenerate test (0: none did);
-/// the nrm[b] of those is meaningless (0 * inf, NaN, ...) and the caller
-/// replaces it. The loop has no branch (a normal computed only "if ok" would
-/// be one, and a branch keeps GCC from vectorising the loop), and it does not
-/// count the failures: GCC 12 cannot vectorise a count of double comparisons
-/// for SSE2, but it can this "last index where" reduction.
+/// Evaluates the run's points b = first .. first + count - 1: out[b] = S and,
+/// if kNormals, nrm[b] = n / |n|. Returns 1 + the last b whose normal failed
+/// the degenerate test (0: none did); the nrm[b] of those is meaningless
+/// (0 * inf, NaN, ...) and the caller replaces it. The loop has no branch (a
+/// normal computed only "if ok" would be one, and a branch keeps GCC from
+/// vectorising the loop), and it does not count the failures: GCC 12 cannot
+/// vectorise a count of double comparisons for SSE2, but it can this "last
+/// index where" reduction.
 template <int Qd, bool kNormals>
-[[gnu::always_inline]] inline std::size_t grid_run(const GridRun& r, Vec3* __restrict out, Vec3* __restrict nrm) {
+[[gnu::always_inline]] inline std::size_t grid_points(const GridRun& r, std::size_t first, std::size_t count,
+                                                      Vec3* __restrict out, Vec3* __restrict nrm) {
   std::size_t degenerate_end = 0;
-  for (std::size_t b = 0; b < r.count; ++b) {
+  for (std::size_t b = first; b < first + count; ++b) {
     const GridPoint g = grid_point<Qd, kNormals>(r, b);
     out[b] = {g.S.x, g.S.y, g.S.z};
     if constexpr (kNormals) {
@@ -948,6 +986,28 @@ template <int Qd, bool kNormals>
       if (!g.ok()) degenerate_end = b + 1;
     }
   }
+  return degenerate_end;
+}
+
+/// The whole run. Runs are short (the bench grid has ~18 points per v span),
+/// and a plain vectorised loop leaves the last count % 8 (AVX-512) or
+/// count % 4 (AVX2) points to a loop that takes one point at a time, which
+/// cost up to a sixth of the time. So the vectorised loop takes a multiple of
+/// kBlock = 4 points -- which it finishes without that scalar loop: AVX-512
+/// takes 8 at a time and then 4 in its vectorised epilogue -- and the rest is
+/// one more block of 4 moved back to end at the run's end: a loop of 4
+/// iterations known at compile time is one 256-bit step (two with SSE2). The
+/// points this block shares with the loop are computed again, to the same
+/// bits. (Blocks of 8 are faster still with AVX-512 but slower with SSE2 and
+/// AVX2; bench/README.md.)
+template <int Qd, bool kNormals>
+[[gnu::always_inline]] inline std::size_t grid_run(const GridRun& r, Vec3* out, Vec3* nrm) {
+  constexpr std::size_t kBlock = 4;
+  if (r.count < kBlock) return grid_points<Qd, kNormals>(r, 0, r.count, out, nrm);
+  const std::size_t bulk = r.count - r.count % kBlock;
+  std::size_t degenerate_end = grid_points<Qd, kNormals>(r, 0, bulk, out, nrm);
+  if (bulk < r.count)
+    degenerate_end = std::max(degenerate_end, grid_points<Qd, kNormals>(r, r.count - kBlock, kBlock, out, nrm));
   return degenerate_end;
 }
 
