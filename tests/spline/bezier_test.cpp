@@ -7,6 +7,7 @@
 // seeds): partition of unity, convex hull, endpoint interpolation, affine
 // invariance, symmetry, subdivision and degree elevation leave the curve
 // unchanged, monomial round trip.
+#include "spline_test_support.h"
 #include "spline/bezier.h"
 
 #include <gtest/gtest.h>
@@ -48,25 +49,9 @@ constexpr int kMaxRandomDegree = 12;
 
 // ---- helpers -----------------------------------------------------------------------
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected std::invalid_argument";
-  return "";
-}
-
-void expect_contains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "\"" << text << "\" should contain \"" << part << "\"";
-}
-
-void expect_near_vec(Vec3 a, Vec3 b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
+using testing::error_of;
+using testing::expect_contains;
+using testing::expect_near_vec;
 
 double scale_of(const std::vector<Vec3>& P) {
   double s = 1;

@@ -3,6 +3,7 @@
 // Expected values come from the worked examples of seed 000 §1.6 (each test
 // names the example) or from properties: the interpolating polynomial is
 // unique (Theorem 1), so Vandermonde, Lagrange and Newton must agree.
+#include "spline_test_support.h"
 #include "spline/interpolation.h"
 
 #include <gtest/gtest.h>
@@ -44,26 +45,9 @@ constexpr int kSamples = 101;      // parameters per curve comparison
 
 // ---- helpers --------------------------------------------------------------------
 
-/// The message of the std::invalid_argument f throws ("" and a failure if none).
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected std::invalid_argument";
-  return "";
-}
-
-void expect_contains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "\"" << text << "\" should contain \"" << part << "\"";
-}
-
-void expect_near_vec(Vec3 a, Vec3 b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
+using testing::error_of;
+using testing::expect_contains;
+using testing::expect_near_vec;
 
 /// Nodes spread over [0, 1] with gaps of at least 1 / (2n): a grid, jittered.
 std::vector<double> spread_nodes(std::mt19937& rng, int n) {
