@@ -42,8 +42,12 @@ class State {
   State(std::vector<View> views, std::vector<Param> params);
 
   int width = 512, height = 512;  // framebuffer size in pixels
-  double time = 0;                // seconds; fixed in headless runs
+  double time = 0;                // seconds; fixed in headless runs (--time)
   bool help = false;              // help overlay on
+  // True in the window runner only. A lab may show live measurements (frame
+  // times, throughput) when it is set; a headless render never contains them,
+  // so reference images stay reproducible.
+  bool interactive = false;
 
   std::size_t view_index() const { return view_; }
   const std::string& view() const { return views_[view_].name; }
@@ -86,6 +90,9 @@ struct Lab {
   std::function<void(const State&)> display;
   /// Returns true when the key was the lab's.
   std::function<bool(State&, unsigned char)> keyboard;
+  /// True when display() reads State::time: the window runner then advances
+  /// time continuously; headless runs keep the fixed --time (default 0).
+  bool animated = false;
 };
 
 /// Each lab's .cpp defines this; both runners call it.

@@ -30,6 +30,7 @@ struct WindowState {
   std::string capture;                  // --capture FILE: write the first frame, exit
   std::vector<std::string> errors;      // shown on screen until the next key
   int exit_status = 0;
+  double start_time = 0;                // --time: where an animated lab's clock starts
 };
 WindowState* g_window = nullptr;
 
@@ -89,16 +90,29 @@ void keyboard(unsigned char key, int, int) {
     case 'h': s.help = !s.help; break;
     case 'v': s.next_view(+1); break;
     case 'V': s.next_view(-1); break;
-    case 'p':
-      std::printf("./lab render %s %s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(),
+    case 'p': {
+      // An animated lab's picture also depends on the clock: print it too.
+      char time[48] = "";
+      if (w.lab.animated) std::snprintf(time, sizeof time, " --time %.3f", s.time);
+      std::printf("./lab render %s %s%s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(), time,
                   s.view().c_str());
       std::fflush(stdout);
       return;
+    }
     default:
       if (!w.lab.keyboard || !w.lab.keyboard(s, key)) return;
   }
   update_title();
   glutPostRedisplay();
+}
+
+// Animated labs: the clock runs from --time on, about 60 frames a second.
+// A --capture run keeps the first frame's time, like a headless run.
+void tick(int) {
+  WindowState& w = *g_window;
+  w.state->time = w.start_time + glutGet(GLUT_ELAPSED_TIME) / 1000.0;
+  glutPostRedisplay();
+  glutTimerFunc(16, tick, 0);
 }
 
 }  // namespace
@@ -126,6 +140,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     window.state = gllab::make_state(window.lab, options);
+    window.state->interactive = true;
+    window.start_time = options.time;
     window.capture = options.out;
   } catch (const gllab::UsageError& e) {
     return fail(2, e.what());
@@ -160,6 +176,7 @@ int main(int argc, char** argv) {
   glutDisplayFunc(display);
   glutReshapeFunc(reshape);
   glutKeyboardFunc(keyboard);
+  if (window.lab.animated && window.capture.empty()) glutTimerFunc(16, tick, 0);
   glutMainLoop();
   return window.exit_status;
 }

@@ -1,0 +1,79 @@
+// common/mesh/indexed_mesh.cpp
+#include "mesh/indexed_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gllab {
+
+IndexedMesh make_torus(int rings, int sides, double R, double r) {
+  if (rings < 3) throw std::invalid_argument("torus: rings=" + std::to_string(rings) + " (need >= 3)");
+  if (sides < 3) throw std::invalid_argument("torus: sides=" + std::to_string(sides) + " (need >= 3)");
+  if (!(r > 0) || !(R > r))
+    throw std::invalid_argument("torus: R=" + std::to_string(R) + ", r=" + std::to_string(r) +
+                                " (need R > r > 0)");
+  IndexedMesh m;
+  const double two_pi = 2 * M_PI;
+  for (int i = 0; i < rings; ++i) {
+    const double u = two_pi * i / rings;  // around z
+    const double cu = std::cos(u), su = std::sin(u);
+    for (int j = 0; j < sides; ++j) {
+      const double v = two_pi * j / sides;  // around the tube
+      const double cv = std::cos(v), sv = std::sin(v);
+      // Point = tube centre (R cos u, R sin u, 0) + r * normal.
+      const double n[3] = {cv * cu, cv * su, sv};
+      m.positions.insert(m.positions.end(), {static_cast<float>((R + r * cv) * cu),
+                                             static_cast<float>((R + r * cv) * su),
+                                             static_cast<float>(r * sv)});
+      m.normals.insert(m.normals.end(),
+                       {static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])});
+      // Hue runs once around the ring: warm on one side, cool on the other.
+      m.colours.insert(m.colours.end(), {static_cast<float>(0.55 + 0.4 * cu),
+                                         static_cast<float>(0.55 + 0.35 * su),
+                                         static_cast<float>(0.6 - 0.3 * cu)});
+    }
+  }
+  auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % rings) * sides + (j % sides)); };
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      // The quad (i, j)-(i+1, j)-(i+1, j+1)-(i, j+1) as two triangles,
+      // counter-clockwise seen from outside.
+      m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return m;
+}
+
+IndexedMesh torus_with_triangles(std::size_t triangles) {
+  // 2 * rings * sides = 4 k^2 with rings = 2k, sides = k.
+  const int k = std::max(3, static_cast<int>(std::lround(std::sqrt(triangles / 4.0))));
+  return make_torus(2 * k, k, 1.0, 0.4);
+}
+
+IndexedMesh unshared(const IndexedMesh& mesh) {
+  IndexedMesh out;
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+    const std::size_t v = 3 * std::size_t{mesh.indices[i]};
+    out.positions.insert(out.positions.end(), &mesh.positions[v], &mesh.positions[v] + 3);
+    out.normals.insert(out.normals.end(), &mesh.normals[v], &mesh.normals[v] + 3);
+    out.colours.insert(out.colours.end(), &mesh.colours[v], &mesh.colours[v] + 3);
+    out.indices.push_back(static_cast<std::uint32_t>(i));
+  }
+  return out;
+}
+
+std::vector<float> interleaved(const IndexedMesh& mesh) {
+  std::vector<float> out;
+  out.reserve(9 * mesh.vertex_count());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    out.insert(out.end(), &mesh.positions[3 * v], &mesh.positions[3 * v] + 3);
+    out.insert(out.end(), &mesh.normals[3 * v], &mesh.normals[3 * v] + 3);
+    out.insert(out.end(), &mesh.colours[3 * v], &mesh.colours[3 * v] + 3);
+  }
+  return out;
+}
+
+}  // namespace gllab
