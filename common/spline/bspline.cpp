@@ -402,7 +402,8 @@ bool is_clamped(const BsplineCurve& c) {
 
 // ---- checks -----------------------------------------------------------------
 
-void validate_knots(int p, int num_points, const std::vector<double>& U, const char* what) {
+void validate_knots(int p, int num_points, const std::vector<double>& U, const char* what, const char* symbol) {
+  const std::string S = symbol;  // "U" or "V": the array the messages name
   const std::string w = what;  // short: no allocation (SSO)
   if (num_points < 1) fail(w + ": no control points (empty input)");
   if (p < 1) fail(w + ": degree p=" + std::to_string(p) + " must be >= 1");
@@ -417,22 +418,22 @@ void validate_knots(int p, int num_points, const std::vector<double>& U, const c
          std::to_string(num_points) + " points, degree " + std::to_string(p) + ")");
   // (Messages are built only on failure: validate runs on every evaluation.)
   for (std::size_t i = 0; i < U.size(); ++i)
-    if (!std::isfinite(U[i])) require_finite(U[i], w, at("U", i));
+    if (!std::isfinite(U[i])) require_finite(U[i], w, at(symbol, i));
   for (std::size_t i = 1; i < U.size(); ++i)
     if (U[i] < U[i - 1])
-      fail(w + ": " + at("U", i) + "=" + num(U[i]) + " < " + at("U", i - 1) + "=" + num(U[i - 1]) +
+      fail(w + ": " + at(symbol, i) + "=" + num(U[i]) + " < " + at(symbol, i - 1) + "=" + num(U[i - 1]) +
            " (must be non-decreasing)");
   for (std::size_t i = 0; i < U.size();) {
     std::size_t j = i;
     while (j < U.size() && U[j] == U[i]) ++j;
     if (static_cast<int>(j - i) > p + 1)
-      fail(w + ": knot " + num(U[i]) + " has multiplicity " + std::to_string(j - i) + " (U[" + std::to_string(i) +
+      fail(w + ": knot " + num(U[i]) + " has multiplicity " + std::to_string(j - i) + " (" + S + "[" + std::to_string(i) +
            ".." + std::to_string(j - 1) + "]), more than p + 1 = " + std::to_string(p + 1));
     i = j;
   }
   const int n = num_points - 1;
   if (!(U[p] < U[n + 1]))
-    fail(w + ": the domain [U[" + std::to_string(p) + "], U[" + std::to_string(n + 1) + "]] = [" + num(U[p]) + ", " +
+    fail(w + ": the domain [" + S + "[" + std::to_string(p) + "], " + S + "[" + std::to_string(n + 1) + "]] = [" + num(U[p]) + ", " +
          num(U[n + 1]) + "] is empty");
 }
 

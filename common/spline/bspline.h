@@ -39,8 +39,10 @@ namespace gllab::spline {
 void validate(const BsplineCurve& curve);
 
 /// The knot-vector part of validate(), for curves and for each direction of a
-/// surface: `what` starts the messages ("knot vector", "V knot vector", ...).
-void validate_knots(int p, int num_points, const std::vector<double>& U, const char* what = "knot vector");
+/// surface: `what` starts the messages ("knot vector", "V knot vector", ...) and
+/// `symbol` names the array in them ("U[5]=0.4", "V[2]=2").
+void validate_knots(int p, int num_points, const std::vector<double>& U, const char* what = "knot vector",
+                    const char* symbol = "U");
 
 /// A closed parameter interval [a, b].
 struct ParamInterval {

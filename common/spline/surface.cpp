@@ -649,7 +649,7 @@ void validate(const BsplineSurface& surface) {
   if (surface.nu < 1 || surface.nv < 1)
     fail(what + ": (nu, nv)=" + ij_text(surface.nu, surface.nv) + " (need at least one control point each way)");
   validate_knots(surface.p, surface.nu, surface.U, "U knot vector");
-  validate_knots(surface.q, surface.nv, surface.V, "V knot vector");
+  validate_knots(surface.q, surface.nv, surface.V, "V knot vector", "V");
   const std::size_t count = uz(surface.nu) * uz(surface.nv);
   if (surface.P.size() != count)
     fail(what + ": P.size()=" + std::to_string(surface.P.size()) + " != nu*nv = " + std::to_string(surface.nu) + "*" +

@@ -978,6 +978,9 @@ TEST(ValidateSurface, ErrorsNameTheValues) {
     BsplineSurface s = SmallSurface();
     s.V[2] = 2;  // decreasing
     EXPECT_EQ(What([&] { validate(s); }).rfind("V knot vector", 0), 0u);
+    // The message names the V array, not U.
+    EXPECT_NE(What([&] { validate(s); }).find("V[3]="), std::string::npos) << What([&] { validate(s); });
+    EXPECT_EQ(What([&] { validate(s); }).find("U["), std::string::npos) << What([&] { validate(s); });
     s = SmallSurface();
     s.U.pop_back();
     EXPECT_EQ(What([&] { validate(s); }).rfind("U knot vector", 0), 0u);
