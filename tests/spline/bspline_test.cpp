@@ -15,18 +15,18 @@
 
 #include "spline/bspline.h"
 #include "spline/errors.h"
+#include "spline_test_support.h"
 
 namespace gllab::spline {
 namespace {
 
+using testing::error_of;
+using testing::kRounding;
+using testing::kSameCurve;
+
 // ---- tolerances (named, never loosened to pass) -----------------------------
 
-/// Textbook fractions recomputed in a few floating-point operations.
-constexpr double kRounding = 1e-15;
-/// An operation that must not change the curve (insertion, refinement,
-/// elevation, splitting, decomposition, batching): relative to the size of the
-/// control polygon.
-constexpr double kSameCurve = 1e-12;
+// kRounding and kSameCurve: spline_test_support.h.
 /// Fourth-order central differences (Richardson: error O(h^4)) with h = 1e-3
 /// of the knot span, relative to the largest derivative of that order seen on
 /// the curve. (The plain 2-point difference has O(h^2) truncation error that
@@ -53,20 +53,6 @@ double scale_of(const BsplineCurve& c) {
 
 /// kSamples evenly spaced parameters over the domain, both ends included.
 std::vector<double> samples(const BsplineCurve& c, int count = kSamples) { return uniform_params(c, count); }
-
-/// The message of the std::invalid_argument that f throws ("" if none).
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-#define EXPECT_ERROR_HAS(call, text) EXPECT_NE(error_of([&] { (void)(call); }).find(text), std::string::npos) \
-    << "message: \"" << error_of([&] { (void)(call); }) << "\", expected to contain \"" << (text) << "\""
 
 /// Random curves with fixed seeds: degree 1..5, 2..9 segments, random knot
 /// spacing and interior multiplicities up to max_mult, clamped or not,

@@ -16,42 +16,31 @@
 #include "spline/bspline.h"
 #include "spline/errors.h"
 #include "spline/nurbs.h"
+#include "spline_test_support.h"
 
 namespace gllab::spline {
 namespace {
+
+using testing::error_of;
+using testing::kRounding;
+using testing::kSameCurve;
 
 // ---- tolerances (named, never loosened to pass) -----------------------------
 
 /// The exact circle: every point at distance radius from the centre (the card
 /// asks 1e-14 for the unit circle), relative to the radius.
 constexpr double kCircle = 1e-14;
-/// Values with a few floating-point operations of rounding.
-constexpr double kRounding = 1e-15;
 /// A point on a conic satisfies its implicit equation to this, relative to the
 /// size of the coefficients times the squared size of the coordinates.
 constexpr double kConicResidual = 1e-12;
 /// The discriminant B^2 - 4AC counts as zero (parabola) below this, relative
 /// to A^2 + B^2 + C^2; ellipses and hyperbolas here are far beyond it.
 constexpr double kDiscriminantZero = 1e-10;
-/// An operation that must not change the curve (relative to its size).
-constexpr double kSameCurve = 1e-12;
+// kRounding and kSameCurve: spline_test_support.h.
 
 constexpr int kSamples = 1001;
 
 double dist(Vec3 a, Vec3 b) { return norm(a - b); }
-
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-#define EXPECT_ERROR_HAS(call, text) EXPECT_NE(error_of([&] { (void)(call); }).find(text), std::string::npos) \
-    << "message: \"" << error_of([&] { (void)(call); }) << "\", expected to contain \"" << (text) << "\""
 
 // ---- homogeneous form -----------------------------------------------------------
 

@@ -11,6 +11,15 @@
 
 namespace gllab::spline::testing {
 
+// ---- tolerances several tests share (named, never loosened to pass) --------
+
+/// Textbook fractions and values recomputed in a few floating-point operations.
+inline constexpr double kRounding = 1e-15;
+/// An operation that must not change the curve (insertion, refinement,
+/// elevation, splitting, decomposition, batching): relative to the size of the
+/// control polygon.
+inline constexpr double kSameCurve = 1e-12;
+
 /// The message of the std::invalid_argument f throws ("" and a failure if none).
 inline std::string error_of(const std::function<void()>& f) {
   try {
@@ -21,6 +30,12 @@ inline std::string error_of(const std::function<void()>& f) {
   ADD_FAILURE() << "expected std::invalid_argument";
   return "";
 }
+
+/// EXPECT_ERROR_HAS(call, text): the call throws std::invalid_argument whose
+/// message contains text. (Use inside namespace gllab::spline with error_of in
+/// scope.)
+#define EXPECT_ERROR_HAS(call, text) EXPECT_NE(error_of([&] { (void)(call); }).find(text), std::string::npos) \
+    << "message: \"" << error_of([&] { (void)(call); }) << "\", expected to contain \"" << (text) << "\""
 
 inline void expect_contains(const std::string& text, const std::string& part) {
   EXPECT_NE(text.find(part), std::string::npos) << "\"" << text << "\" should contain \"" << part << "\"";
