@@ -188,7 +188,10 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb co
   for (const std::string& l : lines) w = std::max(w, text_width(l));
   const int h = kGlyphHeight * static_cast<int>(lines.size());
   glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Blend colour only; keep the destination alpha. A window has no alpha
+  // channel (reads back 255) while the headless buffer has one, so blending
+  // alpha too would make the two runners' images differ under every panel.
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   glColor4f(0.f, 0.f, 0.f, 0.75f);
   const int top = px.height - y;
   glRecti(x, top - h - 2 * kPad, x + w + 2 * kPad, top);
