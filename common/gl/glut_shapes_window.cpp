@@ -7,7 +7,10 @@
 namespace gllab {
 
 void draw_glut_shape(GlutShape shape, bool solid) {
-  const double* a = glut_args(shape).args;
+  // Keep the GlutArgs alive: glut_args(shape).args would point into a
+  // temporary that is gone before the switch reads it.
+  const GlutArgs args = glut_args(shape);
+  const double* a = args.args;
   switch (shape) {
     case GlutShape::kSphere:
       solid ? glutSolidSphere(a[0], int(a[1]), int(a[2])) : glutWireSphere(a[0], int(a[1]), int(a[2]));
