@@ -1,9 +1,11 @@
 // common/harness/options.cpp — parsing with one-line errors that name the value.
 #include "harness/options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace gllab {
 
@@ -76,14 +78,23 @@ State make_state(const Lab& lab, const Options& options) {
   return s;
 }
 
-std::string views_text(const Lab& lab) {
+namespace {
+
+// "  name    what": the whats line up, at least two spaces after the longest name.
+std::string columns(const std::vector<std::pair<std::string, std::string>>& rows, std::size_t min_width) {
+  std::size_t width = min_width;
+  for (const auto& row : rows) width = std::max(width, row.first.size() + 2);
   std::ostringstream out;
-  for (const View& v : lab.views) {
-    out << "  " << v.name;
-    for (std::size_t pad = v.name.size(); pad < 20; ++pad) out << ' ';
-    out << v.what << '\n';
-  }
+  for (const auto& [name, what] : rows) out << "  " << name << std::string(width - name.size(), ' ') << what << '\n';
   return out.str();
+}
+
+}  // namespace
+
+std::string views_text(const Lab& lab) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  for (const View& v : lab.views) rows.emplace_back(v.name, v.what);
+  return columns(rows, 20);
 }
 
 std::string usage_text(const Lab& lab, const std::string& program, Runner runner) {
@@ -110,13 +121,13 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
       << "  --overlay         draw the help overlay\n\n"
       << "views:\n" << views_text(lab) << "\nparameters:\n";
   if (lab.params.empty()) out << "  (none)\n";
+  std::vector<std::pair<std::string, std::string>> params;
   for (const Param& p : lab.params) {
     std::ostringstream range;
     range << p.name << '=' << p.value << " [" << p.lo << ".." << p.hi << "]";
-    out << "  " << range.str();
-    for (std::size_t pad = range.str().size(); pad < 26; ++pad) out << ' ';
-    out << p.what << '\n';
+    params.emplace_back(range.str(), p.what);
   }
+  out << columns(params, 26);
   if (!headless) {
     out << "\nkeys:\n  v / V   next / previous view\n  h       help overlay\n"
         << "  p       print the command that renders this state headless\n  Esc     quit\n";
