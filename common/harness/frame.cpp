@@ -1,6 +1,7 @@
 // common/harness/frame.cpp
 #include "harness/frame.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "gl/check.h"
@@ -65,11 +66,37 @@ std::vector<std::string> help_lines(const Lab& lab, const State& state) {
   return lines;
 }
 
+namespace {
+
+// Splits text at spaces into lines of at most `columns` characters (a word
+// longer than that is cut). Errors are ASCII: one byte, one glyph.
+std::vector<std::string> wrap(const std::string& text, std::size_t columns) {
+  std::vector<std::string> lines;
+  std::string rest = text;
+  while (rest.size() > columns) {
+    std::size_t cut = rest.rfind(' ', columns);
+    if (cut == std::string::npos || cut == 0) cut = columns;
+    lines.push_back(rest.substr(0, cut));
+    rest = rest.substr(rest[cut] == ' ' ? cut + 1 : cut);
+  }
+  lines.push_back(rest);
+  return lines;
+}
+
+}  // namespace
+
 void draw_error_lines(const std::vector<std::string>& errors) {
   GLint vp[4];
   glGetIntegerv(GL_VIEWPORT, vp);
-  const int y = vp[3] - 8 - (kGlyphHeight + 12) - kGlyphHeight * static_cast<int>(errors.size() - 1);
-  draw_text_panel(8, y, errors, Rgb{1.f, 0.35f, 0.3f});
+  // Wrap to the window, continuation lines indented, so no error runs off it.
+  const std::size_t columns = static_cast<std::size_t>(std::max(16, (vp[2] - 32) / kGlyphWidth));
+  std::vector<std::string> lines;
+  for (const std::string& e : errors) {
+    const std::vector<std::string> wrapped = wrap(e, columns);
+    for (std::size_t i = 0; i < wrapped.size(); ++i) lines.push_back(i ? "  " + wrapped[i] : wrapped[i]);
+  }
+  const int y = vp[3] - 8 - (kGlyphHeight + 12) - kGlyphHeight * static_cast<int>(lines.size() - 1);
+  draw_text_panel(8, y, lines, Rgb{1.f, 0.35f, 0.3f});
 }
 
 }  // namespace gllab
