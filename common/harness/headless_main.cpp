@@ -61,7 +61,14 @@ int main(int argc, char** argv) {
       std::string more = errors.size() > 1 ? " (+" + std::to_string(errors.size() - 1) + " more)" : "";
       return fail(1, "view '" + state.view() + "': " + errors.front() + more);
     }
-    gllab::write_png(options.out, context.read_pixels());
+    const gllab::Image image = context.read_pixels();
+    if (lab.shutdown) {
+      lab.shutdown();
+      gllab::check_gl_errors("in shutdown()");
+      const std::vector<std::string> late = gllab::take_frame_errors();
+      if (!late.empty()) return fail(1, late.front());
+    }
+    gllab::write_png(options.out, image);
     return 0;
   } catch (const std::exception& e) {
     return fail(1, e.what());

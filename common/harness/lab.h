@@ -1,7 +1,7 @@
 // common/harness/lab.h — what a lab is, as both runners see it.
 //
 // A lab is data plus four functions, like a Red Book program:
-//   init()      once, after a GL context exists
+//   init()      once, after a GL context exists (shutdown(), if set, undoes it)
 //   display(s)  draws the whole frame from the State s and nothing else
 //   keyboard()  changes the State (never GL state), display() applies it
 // Every knob a key turns is a named parameter in the State, so any picture a
@@ -93,6 +93,9 @@ struct Lab {
   /// True when display() reads State::time: the window runner then advances
   /// time continuously; headless runs keep the fixed --time (default 0).
   bool animated = false;
+  /// Optional: runs once, with the GL context still current, before the
+  /// runner destroys it: release what init() made (buffers, lists, textures).
+  std::function<void()> shutdown = nullptr;
 };
 
 /// Each lab's .cpp defines this; both runners call it.

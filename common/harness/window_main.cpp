@@ -31,6 +31,7 @@ struct WindowState {
   std::vector<std::string> errors;      // shown on screen until the next key
   int exit_status = 0;
   double start_time = 0;                // --time: where an animated lab's clock starts
+  bool shut_down = false;               // lab.shutdown() has run
 };
 WindowState* g_window = nullptr;
 
@@ -106,6 +107,21 @@ void keyboard(unsigned char key, int, int) {
   glutPostRedisplay();
 }
 
+// lab.shutdown() needs the window's context current: freeglut runs the close
+// callback so when the user closes the window; after glutLeaveMainLoop the
+// window still exists and main() calls this itself.
+void shut_down_lab() {
+  WindowState& w = *g_window;
+  if (w.shut_down || !w.lab.shutdown) return;
+  w.shut_down = true;
+  w.lab.shutdown();
+  gllab::check_gl_errors("in shutdown()");
+  for (const std::string& e : gllab::take_frame_errors()) {
+    std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.c_str());
+    w.exit_status = 1;
+  }
+}
+
 // Animated labs: the clock runs from --time on, about 60 frames a second.
 // A --capture run keeps the first frame's time, like a headless run.
 void tick(int) {
@@ -176,7 +192,9 @@ int main(int argc, char** argv) {
   glutDisplayFunc(display);
   glutReshapeFunc(reshape);
   glutKeyboardFunc(keyboard);
+  glutCloseFunc(shut_down_lab);
   if (window.lab.animated && window.capture.empty()) glutTimerFunc(16, tick, 0);
   glutMainLoop();
+  if (glutGetWindow() != 0) shut_down_lab();
   return window.exit_status;
 }

@@ -34,16 +34,21 @@ TEST(Repository, EveryLabFolderIsInTheCMakeListAndViceVersa) {
   }
 }
 
-// README.md has a table row per lab: | NN | topic | `build/bin/<lab>` | ![](reference_images/<lab>__default.png) |
+// README.md has a table row per lab, its thumbnail the lab's first view (the
+// one a window opens with):
+// | NN | topic | `build/bin/<lab>` | ![](reference_images/<lab>__<first view>.png) |
 TEST(Repository, ReadmeLabTableMatchesTheCMakeList) {
   const std::string readme = read_text(kSourceDir / "README.md");
-  const std::regex row(R"(\|\s*(\d\d)\s*\|[^|\n]*\|\s*`build/bin/(\w+)`\s*\|\s*!\[[^\]]*\]\(reference_images/(\w+)__default\.png\)\s*\|)");
+  const std::regex row(
+      R"(\|\s*(\d\d)\s*\|[^|\n]*\|\s*`build/bin/(\w+)`\s*\|\s*!\[[^\]]*\]\(reference_images/(\w+)__(\w+)\.png\)\s*\|)");
   std::vector<std::string> listed;
   for (std::sregex_iterator it(readme.begin(), readme.end(), row), end; it != end; ++it) {
     const std::smatch& m = *it;
     EXPECT_EQ(m[2].str().substr(0, 2), m[1].str()) << m[0];
     EXPECT_EQ(m[2].str(), m[3].str()) << m[0];
-    EXPECT_TRUE(fs::exists(kSourceDir / "reference_images" / (m[3].str() + "__default.png"))) << m[0];
+    const gllab::ProcessResult views = run_process({gllab::testing::headless(m[2].str()), "--list-views"});
+    EXPECT_EQ(views.out.substr(0, views.out.find('\n')), m[4].str()) << m[0] << ": not the lab's first view";
+    EXPECT_TRUE(fs::exists(kSourceDir / "reference_images" / (m[3].str() + "__" + m[4].str() + ".png"))) << m[0];
     listed.push_back(m[2].str());
   }
   EXPECT_EQ(listed, lab_ids());
