@@ -30,6 +30,7 @@
 #include "gl/gl.h"
 #include "harness/offscreen.h"
 #include "image/image.h"
+#include "gl/scene.h"
 #include "gl/submission.h"
 #include "mesh/indexed_mesh.h"
 
@@ -54,20 +55,8 @@ void frame(gllab::SubmittedMesh& m, Submit path) {
 // The scene of lab 05 (its headless default: same projection, light, tilt).
 void set_up_scene() {
   glViewport(0, 0, kFrame, kFrame);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(-1.7, 1.7, -1.7, 1.7, -10, 10);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  const GLfloat direction[] = {-0.35f, 0.45f, 1.f, 0.f}, white[] = {1, 1, 1, 1}, ambient[] = {.2f, .2f, .2f, 1};
-  glLightfv(GL_LIGHT0, GL_POSITION, direction);
-  glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
-  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-  glEnable(GL_LIGHT0);
-  glEnable(GL_LIGHTING);
-  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
-  glEnable(GL_COLOR_MATERIAL);
-  glEnable(GL_NORMALIZE);
+  gllab::ortho_fit(kFrame, kFrame, 1.7, 1.7);  // lab 05's projection
+  gllab::enable_headlight();  // lab 05's light (common/gl/scene.cpp)
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
   glTranslatef(0.f, -0.15f, 0.f);

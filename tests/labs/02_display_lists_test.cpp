@@ -6,34 +6,19 @@
 #include <string>
 #include <vector>
 
-#include "image/compare.h"
 #include "image/image.h"
-#include "test_support.h"
+#include "lab_test_support.h"
 
 namespace {
 
-using gllab::testing::headless;
+using gllab::testing::pixels_differing;
 using gllab::testing::ScratchDir;
 
 const std::string kLab = "02_display_lists";
 
-// Renders one view headless with --set arguments; fails the test on error.
+// A view of this lab with --set arguments (lab_test_support.h).
 gllab::Image render(const ScratchDir& dir, const std::string& view, const std::vector<std::string>& sets) {
-  std::string name = view;
-  std::vector<std::string> argv = {headless(kLab), "--view", view};
-  for (const std::string& s : sets) {
-    argv.insert(argv.end(), {"--set", s});
-    name += "_" + s;
-  }
-  const std::string out = (dir / (name + ".png")).string();
-  argv.insert(argv.end(), {"--out", out});
-  const gllab::ProcessResult r = gllab::run_process(argv);
-  EXPECT_EQ(r.exit_status, 0) << r.err;
-  return gllab::read_png(out);
-}
-
-long long differing(const gllab::Image& a, const gllab::Image& b) {
-  return gllab::compare_images(a, b, 0).differing_pixels;  // threshold 0: any change counts
+  return gllab::testing::render_view(kLab, dir, view, sets);
 }
 
 long long count_colour(const gllab::Image& im, int r, int g, int b) {
@@ -52,7 +37,7 @@ TEST(DisplayListsLab, TorusFromListHasTheImmediatePixels) {
   ScratchDir dir("lab02");
   const gllab::Image immediate = render(dir, "list_vs_immediate", {"path=0"});
   const gllab::Image list = render(dir, "list_vs_immediate", {"path=1"});
-  EXPECT_EQ(differing(immediate, list), 0);
+  EXPECT_EQ(pixels_differing(immediate, list), 0);
 }
 
 // detail=24 is not the detail init() compiled (16), so path=1 deletes the list
@@ -61,9 +46,9 @@ TEST(DisplayListsLab, ListRecompiledWithCompileAndExecuteHasTheImmediatePixels) 
   ScratchDir dir("lab02");
   const gllab::Image immediate = render(dir, "list_vs_immediate", {"path=0", "detail=24"});
   const gllab::Image list = render(dir, "list_vs_immediate", {"path=1", "detail=24"});
-  EXPECT_EQ(differing(immediate, list), 0);
+  EXPECT_EQ(pixels_differing(immediate, list), 0);
   // The comparison can see a change: a finer torus changes the picture.
-  EXPECT_GT(differing(list, render(dir, "list_vs_immediate", {"path=1"})), 0);
+  EXPECT_GT(pixels_differing(list, render(dir, "list_vs_immediate", {"path=1"})), 0);
 }
 
 // Red Book list.c: the list sets red (1,0,0) and translates, so the bar drawn

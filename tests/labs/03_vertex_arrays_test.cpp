@@ -7,34 +7,19 @@
 #include <string>
 #include <vector>
 
-#include "image/compare.h"
 #include "image/image.h"
-#include "test_support.h"
+#include "lab_test_support.h"
 
 namespace {
 
-using gllab::testing::headless;
+using gllab::testing::pixels_differing;
 using gllab::testing::ScratchDir;
 
 const std::string kLab = "03_vertex_arrays";
 
-// Renders one view headless with --set arguments; fails the test on error.
+// A view of this lab with --set arguments (lab_test_support.h).
 gllab::Image render(const ScratchDir& dir, const std::string& view, const std::vector<std::string>& sets) {
-  std::string name = view;
-  std::vector<std::string> argv = {headless(kLab), "--view", view};
-  for (const std::string& s : sets) {
-    argv.insert(argv.end(), {"--set", s});
-    name += "_" + s;
-  }
-  const std::string out = (dir / (name + ".png")).string();
-  argv.insert(argv.end(), {"--out", out});
-  const gllab::ProcessResult r = gllab::run_process(argv);
-  EXPECT_EQ(r.exit_status, 0) << r.err;
-  return gllab::read_png(out);
-}
-
-long long differing(const gllab::Image& a, const gllab::Image& b) {
-  return gllab::compare_images(a, b, 0).differing_pixels;  // threshold 0: any change counts
+  return gllab::testing::render_view(kLab, dir, view, sets);
 }
 
 // Stride 0 over three arrays and stride 36 over one interleaved array point GL
@@ -44,7 +29,7 @@ TEST(VertexArraysLab, SeparateAndInterleavedArraysGiveIdenticalPixels) {
   for (const char* call : {"call=0", "call=1"}) {
     const gllab::Image separate = render(dir, "default", {"layout=0", call});
     const gllab::Image packed = render(dir, "default", {"layout=1", call});
-    EXPECT_EQ(differing(separate, packed), 0) << call;
+    EXPECT_EQ(pixels_differing(separate, packed), 0) << call;
   }
 }
 
@@ -55,7 +40,7 @@ TEST(VertexArraysLab, DrawArraysOfUnsharedAndDrawElementsGiveIdenticalPixels) {
   for (const char* detail : {"detail=14", "detail=40"}) {
     const gllab::Image elements = render(dir, "default", {"call=0", detail});
     const gllab::Image arrays = render(dir, "default", {"call=1", detail});
-    EXPECT_EQ(differing(elements, arrays), 0) << detail;
+    EXPECT_EQ(pixels_differing(elements, arrays), 0) << detail;
   }
 }
 
@@ -68,7 +53,7 @@ TEST(VertexArraysLab, WrongStrideScramblesTheTorus) {
   const gllab::Image wrong = render(dir, "wrong_stride", {"stride=0"});
   const gllab::Image right = render(dir, "wrong_stride", {"stride=36"});
   constexpr double kScrambledShareAtLeast = 0.05;
-  EXPECT_GT(differing(wrong, right), static_cast<long long>(kScrambledShareAtLeast * 512 * 512));
+  EXPECT_GT(pixels_differing(wrong, right), static_cast<long long>(kScrambledShareAtLeast * 512 * 512));
 }
 
 }  // namespace

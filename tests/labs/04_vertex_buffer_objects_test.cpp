@@ -9,21 +9,17 @@
 
 #include "image/compare.h"
 #include "image/image.h"
-#include "test_support.h"
+#include "lab_test_support.h"
 
 namespace {
 
-using gllab::testing::headless;
 using gllab::testing::ScratchDir;
 
 constexpr char kQuarterPeriod[] = "0.5";  // kPeriod / 4, seconds
 
+// The view at `time` seconds (lab_test_support.h).
 gllab::Image render(const ScratchDir& dir, const std::string& view, const std::string& time) {
-  const std::string png = (dir / (view + "_" + time + ".png")).string();
-  const gllab::ProcessResult r =
-      gllab::run_process({headless("04_vertex_buffer_objects"), "--view", view, "--time", time, "--out", png});
-  EXPECT_EQ(r.exit_status, 0) << r.err;
-  return gllab::read_png(png);
+  return gllab::testing::render_view("04_vertex_buffer_objects", dir, view, {}, time);
 }
 
 TEST(VertexBufferObjects, LaterViewIsDefaultAQuarterPeriodOn) {

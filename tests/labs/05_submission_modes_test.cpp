@@ -12,22 +12,18 @@
 
 #include "image/compare.h"
 #include "image/image.h"
-#include "test_support.h"
+#include "lab_test_support.h"
 
 namespace {
 
-using gllab::testing::headless;
 using gllab::testing::ScratchDir;
 
 const std::string kLab = "05_submission_modes";
 const std::vector<std::string> kPaths = {"immediate", "display_list", "vertex_arrays", "vbo"};
 
+// The view at 2^size_log2 triangles (lab_test_support.h).
 gllab::Image render(const ScratchDir& dir, const std::string& view, int size_log2) {
-  const std::string png = (dir / (view + "_" + std::to_string(size_log2) + ".png")).string();
-  const gllab::ProcessResult r = gllab::run_process(
-      {headless(kLab), "--view", view, "--set", "size_log2=" + std::to_string(size_log2), "--out", png});
-  EXPECT_EQ(r.exit_status, 0) << r.err;
-  return gllab::read_png(png);
+  return gllab::testing::render_view(kLab, dir, view, {"size_log2=" + std::to_string(size_log2)});
 }
 
 // Pixels that are not the clear colour (0.12, 0.13, 0.16 -> 31, 33, 41).

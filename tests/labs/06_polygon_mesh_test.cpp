@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "test_support.h"
+#include "lab_test_support.h"
 
 namespace {
 
@@ -16,18 +16,9 @@ using gllab::testing::ScratchDir;
 
 const std::string kLab = "06_polygon_mesh";
 
+// A view of this lab with --set arguments (lab_test_support.h).
 gllab::Image render(const ScratchDir& dir, const std::string& view, const std::vector<std::string>& sets) {
-  std::string name = view;
-  std::vector<std::string> argv = {headless(kLab), "--view", view};
-  for (const std::string& s : sets) {
-    argv.insert(argv.end(), {"--set", s});
-    name += "_" + s;
-  }
-  const std::string out = (dir / (name + ".png")).string();
-  argv.insert(argv.end(), {"--out", out});
-  const gllab::ProcessResult r = gllab::run_process(argv);
-  EXPECT_EQ(r.exit_status, 0) << r.err;
-  return gllab::read_png(out);
+  return gllab::testing::render_view(kLab, dir, view, sets);
 }
 
 // Pixels whose left-half value differs from the right-half value one half
