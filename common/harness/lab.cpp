@@ -125,7 +125,24 @@ void validate_lab(const Lab& lab) {
       fail(std::string("key '") + static_cast<char>(k) + "' is reserved by the runner");
     for (std::size_t j = i + 1; j < lab.keys.size(); ++j)
       if (lab.keys[j].key == k) fail(std::string("key '") + static_cast<char>(k) + "' twice");
+    const std::string& param = lab.keys[i].param;
+    const bool known = std::any_of(lab.params.begin(), lab.params.end(),
+                                   [&](const Param& p) { return p.name == param; });
+    if (!param.empty() && !known)
+      fail(std::string("key '") + static_cast<char>(k) + "' turns unknown parameter '" + param + "'");
+    if (param.empty() && !lab.keyboard)
+      fail(std::string("key '") + static_cast<char>(k) + "' names no parameter and the lab has no keyboard()");
   }
+}
+
+bool apply_key(const Lab& lab, State& state, unsigned char key) {
+  for (const Key& k : lab.keys) {
+    if (k.key != key || k.param.empty()) continue;
+    if (k.step == 0) state.toggle(k.param);
+    else state.step(k.param, k.step);
+    return true;
+  }
+  return lab.keyboard && lab.keyboard(state, key);
 }
 
 void report_frame_error(const std::string& message) { pending_errors().push_back(message); }

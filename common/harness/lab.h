@@ -30,10 +30,16 @@ struct Param {
   std::string what;
 };
 
-/// A key the lab handles, listed in the help overlay.
+/// A key the lab handles, listed in the help overlay. Most keys only turn
+/// one parameter; they name it and need no code:
+///   {'s', "slices +2", "slices", +2}   adds 2, clamped to the range
+///   {'l', "lighting on/off", "lighting"} toggles (step 0)
+/// A key without a parameter goes to Lab::keyboard.
 struct Key {
   unsigned char key;
   std::string what;
+  std::string param = {};
+  double step = 0;
 };
 
 /// Everything display() may read. The runners own it; keyboard() changes it.
@@ -88,8 +94,9 @@ struct Lab {
   std::vector<Key> keys;
   std::function<void()> init;
   std::function<void(const State&)> display;
-  /// Returns true when the key was the lab's.
-  std::function<bool(State&, unsigned char)> keyboard;
+  /// Keys that do more than turn one parameter. Returns true when the key
+  /// was the lab's. May be empty when every key names its parameter.
+  std::function<bool(State&, unsigned char)> keyboard = nullptr;
   /// True when display() reads State::time: the window runner then advances
   /// time continuously; headless runs keep the fixed --time (default 0).
   bool animated = false;
@@ -105,8 +112,13 @@ Lab define_lab();
 inline constexpr char kReservedKeys[] = "hvVp\x1b";
 
 /// Checks a lab definition (views present and unique, defaults in range, no
-/// reserved or duplicate keys). Throws std::logic_error naming the problem.
+/// reserved or duplicate keys, every key's parameter exists). Throws
+/// std::logic_error naming the problem.
 void validate_lab(const Lab& lab);
+
+/// A key press in the window: a key that names a parameter steps or toggles
+/// it, any other goes to lab.keyboard. Returns true when the state changed.
+bool apply_key(const Lab& lab, State& state, unsigned char key);
 
 /// Errors found while drawing (GL errors, GLU NURBS errors). The headless
 /// runner exits non-zero when any is pending after a frame; the window runner

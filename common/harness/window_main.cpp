@@ -101,7 +101,7 @@ void keyboard(unsigned char key, int, int) {
       return;
     }
     default:
-      if (!w.lab.keyboard || !w.lab.keyboard(s, key)) return;
+      if (!gllab::apply_key(w.lab, s, key)) return;
   }
   update_title();
   glutPostRedisplay();

@@ -201,7 +201,7 @@ void draw_invalid_view(const gllab::State& s) {
   gllab::draw_label(0, -0.1, 0, "non-planar outline", kLabel);
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -212,17 +212,6 @@ void display(const gllab::State& s) {
   gllab::ortho_fit(s.width, s.height, 3.3, 2.5);
   if (s.view() == "invalid_polygons") draw_invalid_view(s);
   else draw_primitives_view(s);
-}
-
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 'l': s.toggle("lighting"); return true;
-    case 'r': s.step("spin", +15); return true;
-    case 'R': s.step("spin", -15); return true;
-    case 'f': s.toggle("flip"); return true;
-    case 'n': s.toggle("labels"); return true;
-    default: return false;
-  }
 }
 
 }  // namespace
@@ -239,12 +228,11 @@ gllab::Lab gllab::define_lab() {
            {"spin", 0, -180, 180, "turn each shape about its vertical axis, degrees"},
            {"flip", 0, 0, 1, "mirror each shape in x: reverses the winding"},
            {"labels", 1, 0, 1, "name each primitive"}},
-          {{'l', "lighting on/off"},
-           {'r', "spin +15 degrees"},
-           {'R', "spin -15 degrees"},
-           {'f', "flip winding (mirror in x)"},
-           {'n', "primitive names on/off"}},
+          {{'l', "lighting on/off", "lighting"},
+           {'r', "spin +15 degrees", "spin", +15},
+           {'R', "spin -15 degrees", "spin", -15},
+           {'f', "flip winding (mirror in x)", "flip"},
+           {'n', "primitive names on/off", "labels"}},
           init,
-          display,
-          keyboard};
+          display};
 }

@@ -161,7 +161,7 @@ void draw_leak_view(const gllab::State& s) {
                     kLabel);
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -188,19 +188,6 @@ void display(const gllab::State& s) {
   gllab::draw_label(0, -2.9, 0, "path=0 glBegin/glEnd, path=1 glCallList: same pixels", kLabel);
 }
 
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 'i': s.toggle("path"); return true;
-    case 'f': s.toggle("fix"); return true;
-    case '+': s.step("detail", +4); return true;
-    case '-': s.step("detail", -4); return true;
-    case 'r': s.step("spin", +15); return true;
-    case 'R': s.step("spin", -15); return true;
-    case 'n': s.toggle("labels"); return true;
-    default: return false;
-  }
-}
-
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
@@ -215,14 +202,13 @@ gllab::Lab gllab::define_lab() {
            {"detail", kDefaultDetail, 3, 60, "torus sides k: 2k rings, 4k^2 triangles"},
            {"spin", 0, -180, 180, "turn the torus about its axis, degrees"},
            {"labels", 1, 0, 1, "labels on/off"}},
-          {{'i', "torus: display list / immediate mode"},
-           {'f', "fix the state leak on/off"},
-           {'+', "torus detail +4 (recompiles the list)"},
-           {'-', "torus detail -4 (recompiles the list)"},
-           {'r', "spin +15 degrees"},
-           {'R', "spin -15 degrees"},
-           {'n', "labels on/off"}},
+          {{'i', "torus: display list / immediate mode", "path"},
+           {'f', "fix the state leak on/off", "fix"},
+           {'+', "torus detail +4 (recompiles the list)", "detail", +4},
+           {'-', "torus detail -4 (recompiles the list)", "detail", -4},
+           {'r', "spin +15 degrees", "spin", +15},
+           {'R', "spin -15 degrees", "spin", -15},
+           {'n', "labels on/off", "labels"}},
           init,
-          display,
-          keyboard};
+          display};
 }

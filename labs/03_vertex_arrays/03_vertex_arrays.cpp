@@ -122,7 +122,7 @@ void label(bool on, float x, float y, const std::string& text, gllab::Rgb colour
   if (on) gllab::draw_label(x, y, 0, text, colour);
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -175,21 +175,6 @@ void display(const gllab::State& s) {
   }
 }
 
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 'l': s.toggle("layout"); return true;
-    case 'd': s.toggle("call"); return true;
-    case 's': s.step("stride", +12); return true;
-    case 'S': s.step("stride", -12); return true;
-    case '+': s.step("detail", +2); return true;
-    case '-': s.step("detail", -2); return true;
-    case 'r': s.step("spin", +15); return true;
-    case 'R': s.step("spin", -15); return true;
-    case 'n': s.toggle("labels"); return true;
-    default: return false;
-  }
-}
-
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
@@ -206,16 +191,15 @@ gllab::Lab gllab::define_lab() {
            {"detail", kDefaultDetail, 3, 60, "torus sides k: 2k rings, 4k^2 triangles"},
            {"spin", 0, -180, 180, "turn the torus about its axis, degrees"},
            {"labels", 1, 0, 1, "labels and counts on/off"}},
-          {{'l', "separate / interleaved arrays"},
-           {'d', "glDrawElements / glDrawArrays"},
-           {'s', "stride +12 bytes (wrong_stride)"},
-           {'S', "stride -12 bytes (wrong_stride)"},
-           {'+', "torus detail +2"},
-           {'-', "torus detail -2"},
-           {'r', "spin +15 degrees"},
-           {'R', "spin -15 degrees"},
-           {'n', "labels and counts on/off"}},
+          {{'l', "separate / interleaved arrays", "layout"},
+           {'d', "glDrawElements / glDrawArrays", "call"},
+           {'s', "stride +12 bytes (wrong_stride)", "stride", +12},
+           {'S', "stride -12 bytes (wrong_stride)", "stride", -12},
+           {'+', "torus detail +2", "detail", +2},
+           {'-', "torus detail -2", "detail", -2},
+           {'r', "spin +15 degrees", "spin", +15},
+           {'R', "spin -15 degrees", "spin", -15},
+           {'n', "labels and counts on/off", "labels"}},
           init,
-          display,
-          keyboard};
+          display};
 }

@@ -165,7 +165,7 @@ void release_buffers() {
   g_buffers = {};
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -218,15 +218,6 @@ void display(const gllab::State& s) {
                            {1.f, 0.45f, 0.4f});
 }
 
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 'a': s.step("amplitude", -0.02); return true;
-    case 'A': s.step("amplitude", +0.02); return true;
-    case 'n': s.toggle("normals"); return true;
-    default: return false;
-  }
-}
-
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
@@ -239,10 +230,11 @@ gllab::Lab gllab::define_lab() {
                   {"unbound_pitfall", "floor lost: client array with a buffer still bound"}},
                  {{"amplitude", 0.08, 0, 0.16, "ripple height (0 = plain torus)"},
                   {"normals", 0, 0, 1, "draw the normals as lines (any view)"}},
-                 {{'a', "ripple amplitude -0.02"}, {'A', "ripple amplitude +0.02"}, {'n', "normal lines on/off"}},
+                 {{'a', "ripple amplitude -0.02", "amplitude", -0.02},
+                  {'A', "ripple amplitude +0.02", "amplitude", +0.02},
+                  {'n', "normal lines on/off", "normals"}},
                  init,
-                 display,
-                 keyboard};
+                 display};
   lab.animated = true;  // display() reads State::time
   lab.shutdown = release_buffers;
   return lab;

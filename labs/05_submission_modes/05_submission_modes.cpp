@@ -88,7 +88,7 @@ std::string with_commas(std::size_t n) {
   return digits;
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -126,14 +126,6 @@ void display(const gllab::State& s) {
   }
 }
 
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case '+': s.step("size_log2", +1); return true;
-    case '-': s.step("size_log2", -1); return true;
-    default: return false;
-  }
-}
-
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
@@ -145,10 +137,10 @@ gllab::Lab gllab::define_lab() {
                   {"vertex_arrays", "client arrays + glDrawElements with an index array"},
                   {"vbo", "interleaved buffer + element buffer, uploaded once"}},
                  {{"size_log2", 14, 10, 20, "about 2^size_log2 triangles (10: 1k .. 20: 1M)"}},
-                 {{'+', "mesh size x2 (up to 1M triangles)"}, {'-', "mesh size /2 (down to 1k)"}},
+                 {{'+', "mesh size x2 (up to 1M triangles)", "size_log2", +1},
+                  {'-', "mesh size /2 (down to 1k)", "size_log2", -1}},
                  init,
-                 display,
-                 keyboard};
+                 display};
   // display() reads State::time (a slow spin), so the window redraws
   // continuously and the timings stay live; headless renders use --time.
   lab.animated = true;

@@ -258,7 +258,7 @@ void draw_data_structure(const gllab::State& s) {
         str(arrays.vertex_count()) + " vertices sent to GL: one per corner and smoothing group"}, kText);
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -273,23 +273,6 @@ void display(const gllab::State& s) {
   else if (view == "feature_edges") draw_feature_edges(s);
   else if (view == "by_curvature") draw_by_curvature(s);
   else draw_data_structure(s);
-}
-
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 'r': s.step("spin", +15); return true;
-    case 'R': s.step("spin", -15); return true;
-    case '+': s.step("slices", +4); return true;
-    case '-': s.step("slices", -4); return true;
-    case ']': s.step("feature_angle", +15); return true;
-    case '[': s.step("feature_angle", -15); return true;
-    case 's': s.step("segments", +2); return true;
-    case 'S': s.step("segments", -2); return true;
-    case 'e': s.toggle("edges"); return true;
-    case 'n': s.toggle("normals"); return true;
-    case 'l': s.toggle("labels"); return true;
-    default: return false;
-  }
 }
 
 }  // namespace
@@ -309,12 +292,17 @@ gllab::Lab gllab::define_lab() {
            {"edges", 1, 0, 1, "draw edges as lines: features, virtual ones, the lentil's rings"},
            {"normals", 0, 0, 1, "draw the normals sent to GL"},
            {"labels", 1, 0, 1, "counts and captions"}},
-          {{'r', "spin +15 degrees"}, {'R', "spin -15 degrees"},
-           {'+', "slices +4"}, {'-', "slices -4"},
-           {']', "feature angle +15 degrees"}, {'[', "feature angle -15 degrees"},
-           {'s', "profile segments +2"}, {'S', "profile segments -2"},
-           {'e', "edges on/off"}, {'n', "normals on/off"}, {'l', "counts and captions on/off"}},
+          {{'r', "spin +15 degrees", "spin", +15},
+           {'R', "spin -15 degrees", "spin", -15},
+           {'+', "slices +4", "slices", +4},
+           {'-', "slices -4", "slices", -4},
+           {']', "feature angle +15 degrees", "feature_angle", +15},
+           {'[', "feature angle -15 degrees", "feature_angle", -15},
+           {'s', "profile segments +2", "segments", +2},
+           {'S', "profile segments -2", "segments", -2},
+           {'e', "edges on/off", "edges"},
+           {'n', "normals on/off", "normals"},
+           {'l', "counts and captions on/off", "labels"}},
           init,
-          display,
-          keyboard};
+          display};
 }

@@ -352,7 +352,7 @@ void draw_glu_vs_glut(GLUquadric* q, const gllab::State& s) {
                            kText);
 }
 
-// init / display / keyboard ------------------------------------------------
+// init / display ----------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
@@ -392,25 +392,6 @@ void display(const gllab::State& s) {
   gluDeleteQuadric(q);
 }
 
-bool keyboard(gllab::State& s, unsigned char key) {
-  switch (key) {
-    case 's': s.step("slices", +2); return true;
-    case 'S': s.step("slices", -2); return true;
-    case 't': s.step("stacks", +1); return true;
-    case 'T': s.step("stacks", -1); return true;
-    case 'e': s.step("edge_px", +2); return true;
-    case 'E': s.step("edge_px", -2); return true;
-    case 'g': s.step("glut_stacks", +1); return true;
-    case 'G': s.step("glut_stacks", -1); return true;
-    case 'r': s.step("spin", +15); return true;
-    case 'R': s.step("spin", -15); return true;
-    case 'f': s.toggle("flat"); return true;
-    case 'l': s.toggle("lighting"); return true;
-    case 'n': s.toggle("labels"); return true;
-    default: return false;
-  }
-}
-
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
@@ -434,20 +415,19 @@ gllab::Lab gllab::define_lab() {
            {"flat", 1, 0, 1, "glu_vs_glut_sphere: glShadeModel(GL_FLAT) in the lit row"},
            {"lighting", 1, 0, 1, "light the shapes (default)"},
            {"labels", 1, 0, 1, "names and counts under the shapes"}},
-          {{'s', "slices +2"},
-           {'S', "slices -2"},
-           {'t', "stacks +1"},
-           {'T', "stacks -1"},
-           {'e', "edge pixels +2 (resolution)"},
-           {'E', "edge pixels -2 (resolution)"},
-           {'g', "glut sphere stacks +1"},
-           {'G', "glut sphere stacks -1"},
-           {'r', "spin +15 degrees"},
-           {'R', "spin -15 degrees"},
-           {'f', "flat shading on/off (glu_vs_glut_sphere)"},
-           {'l', "lighting on/off (default)"},
-           {'n', "labels on/off"}},
+          {{'s', "slices +2", "slices", +2},
+           {'S', "slices -2", "slices", -2},
+           {'t', "stacks +1", "stacks", +1},
+           {'T', "stacks -1", "stacks", -1},
+           {'e', "edge pixels +2 (resolution)", "edge_px", +2},
+           {'E', "edge pixels -2 (resolution)", "edge_px", -2},
+           {'g', "glut sphere stacks +1", "glut_stacks", +1},
+           {'G', "glut sphere stacks -1", "glut_stacks", -1},
+           {'r', "spin +15 degrees", "spin", +15},
+           {'R', "spin -15 degrees", "spin", -15},
+           {'f', "flat shading on/off (glu_vs_glut_sphere)", "flat"},
+           {'l', "lighting on/off (default)", "lighting"},
+           {'n', "labels on/off", "labels"}},
           init,
-          display,
-          keyboard};
+          display};
 }

@@ -91,6 +91,7 @@ TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {
   lab.id = "test";
   lab.views = {{"default", ""}};
   lab.display = [](const gllab::State&) {};
+  lab.keyboard = [](gllab::State&, unsigned char) { return false; };
   lab.keys = {{'h', "mine"}};
   EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
   lab.keys = {{'a', "one"}, {'a', "two"}};
@@ -100,3 +101,42 @@ TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {
 }
 
 }  // namespace
+
+// Keys that name a parameter: the runner steps or toggles it, clamped to the
+// range as State::step promises; other keys reach the lab's keyboard().
+TEST(ApplyKey, NamedParameterIsSteppedClampedOrToggled) {
+  gllab::Lab lab;
+  lab.id = "test";
+  lab.views = {{"default", ""}};
+  lab.params = {{"count", 4, 2, 6, ""}, {"labels", 1, 0, 1, ""}};
+  lab.display = [](const gllab::State&) {};
+  int other = 0;
+  lab.keyboard = [&](gllab::State&, unsigned char key) { return key == 'x' && ++other; };
+  lab.keys = {{'+', "count +3", "count", +3}, {'n', "labels on/off", "labels"}, {'x', "other"}};
+  ASSERT_NO_THROW(gllab::validate_lab(lab));
+  gllab::State s(lab.views, lab.params);
+  EXPECT_TRUE(gllab::apply_key(lab, s, '+'));
+  EXPECT_EQ(s.get("count"), 6);  // 4 + 3 clamped to the range's top
+  EXPECT_TRUE(gllab::apply_key(lab, s, 'n'));
+  EXPECT_EQ(s.get("labels"), 0);
+  EXPECT_TRUE(gllab::apply_key(lab, s, 'n'));
+  EXPECT_EQ(s.get("labels"), 1);
+  EXPECT_TRUE(gllab::apply_key(lab, s, 'x'));
+  EXPECT_EQ(other, 1);
+  EXPECT_FALSE(gllab::apply_key(lab, s, 'q'));  // nobody's key: no change
+  EXPECT_EQ(s.as_arguments(), "--view default --set count=6");
+}
+
+TEST(ValidateLab, KeyWithUnknownParameterOrNoHandlerIsRejected) {
+  gllab::Lab lab;
+  lab.id = "test";
+  lab.views = {{"default", ""}};
+  lab.params = {{"count", 4, 2, 6, ""}};
+  lab.display = [](const gllab::State&) {};
+  lab.keys = {{'+', "more", "cuont", +1}};
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+  lab.keys = {{'x', "does something"}};  // no parameter and no keyboard()
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+  lab.keys = {{'+', "more", "count", +1}};
+  EXPECT_NO_THROW(gllab::validate_lab(lab));
+}
