@@ -45,6 +45,12 @@ std::vector<std::string> help_lines(const Lab& lab, const State& state) {
   lines.push_back("");
   lines.push_back("[v]/[V] next/previous view  [h] help");
   lines.push_back("[p] print headless command  [Esc] quit");
+  if (!lab.points.empty()) {
+    std::string names;
+    for (const PointList& l : lab.points) names += (names.empty() ? "" : ", ") + l.name;
+    lines.push_back("[mouse] drag a point (" + names + ")");
+  }
+  if (lab.model) lines.push_back("[Ctrl+S] save it as " + lab.id + "__<view>.json");
   for (const Key& k : lab.keys) lines.push_back(std::string("[") + static_cast<char>(k.key) + "] " + k.what);
   if (!state.params().empty()) {
     lines.push_back("");

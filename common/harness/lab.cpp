@@ -17,6 +17,27 @@ std::string format_number(double v) {
   return out.str();
 }
 
+// Enough digits that a point on the grid (snap_to_grid) reads back as the
+// same double (12 significant digits: exact for |x| < 1e9 at 1 / 1000).
+std::string format_coordinate(double v) {
+  std::ostringstream out;
+  out.precision(12);
+  out << v;
+  return out.str();
+}
+
+std::string format_point(const spline::Vec3& p, int dimension) {
+  std::string text = format_coordinate(p.x) + "," + format_coordinate(p.y);
+  if (dimension == 3 || p.z != 0) text += "," + format_coordinate(p.z);
+  return text;
+}
+
+bool parse_number(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0' && std::isfinite(value);
+}
+
 std::string view_list(const std::vector<View>& views) {
   std::string names;
   for (const View& v : views) names += (names.empty() ? "" : ", ") + v.name;
@@ -30,9 +51,10 @@ std::vector<std::string>& pending_errors() {
 
 }  // namespace
 
-State::State(std::vector<View> views, std::vector<Param> params)
-    : views_(std::move(views)), params_(std::move(params)) {
+State::State(std::vector<View> views, std::vector<Param> params, std::vector<PointList> points)
+    : views_(std::move(views)), params_(std::move(params)), points_(std::move(points)) {
   for (const Param& p : params_) defaults_.push_back(p.value);
+  default_points_ = points_;
 }
 
 void State::select_view(const std::string& name) {
@@ -79,16 +101,77 @@ void State::set(const std::string& name, double value) {
 void State::set_from_text(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw std::invalid_argument("malformed --set '" + assignment + "' (expected key=value)");
+    throw std::invalid_argument("malformed --set '" + assignment + "' (expected key=value or P[i]=x,y)");
   const std::string name = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
+  const auto bracket = name.find('[');
+  if (bracket != std::string::npos) {
+    // P[3]=x,y or P[3]=x,y,z: one point of a list.
+    const std::string list = name.substr(0, bracket);
+    const PointList& l = find_list(list);  // unknown lists before malformed indices
+    const std::string index_text = name.substr(bracket + 1, name.size() - bracket - 2);
+    double index = 0;
+    if (name.back() != ']' || index_text.find_first_not_of("0123456789") != std::string::npos ||
+        !parse_number(index_text, index))
+      throw std::invalid_argument("malformed --set '" + assignment + "' (expected " + list + "[i]=x,y)");
+    std::vector<double> xyz;
+    std::size_t start = 0;
+    while (true) {
+      const auto comma = text.find(',', start);
+      const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      double v = 0;
+      if (!parse_number(part, v))
+        throw std::invalid_argument("malformed --set '" + assignment + "': '" + part + "' is not a number");
+      xyz.push_back(v);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (xyz.size() < 2 || xyz.size() > 3)
+      throw std::invalid_argument("malformed --set '" + assignment + "': " + std::to_string(xyz.size()) +
+                                  " coordinates (expected x,y or x,y,z)");
+    const auto i = static_cast<std::size_t>(index);
+    const double z = xyz.size() == 3 ? xyz[2] : (i < l.points.size() ? l.points[i].z : 0.0);
+    move_point(list, i, {xyz[0], xyz[1], z});
+    return;
+  }
   find(name);  // unknown keys are reported before malformed values
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(value))
+  double value = 0;
+  if (!parse_number(text, value))
     throw std::invalid_argument("malformed --set '" + assignment + "': '" + text +
                                 "' is not a number");
   set(name, value);
+}
+
+std::size_t State::list_index(const std::string& name) const {
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    if (points_[i].name == name) return i;
+  std::string names;
+  for (const PointList& l : points_) names += (names.empty() ? "" : ", ") + l.name;
+  throw std::invalid_argument("unknown point list '" + name + "' (point lists: " +
+                              (names.empty() ? "none" : names) + ")");
+}
+
+const PointList& State::find_list(const std::string& name) const { return points_[list_index(name)]; }
+
+const std::vector<spline::Vec3>& State::points(const std::string& list) const { return find_list(list).points; }
+
+void State::move_point(const std::string& list, std::size_t index, spline::Vec3 p) {
+  PointList& l = points_[list_index(list)];
+  if (index >= l.points.size())
+    throw std::invalid_argument("point " + list + "[" + std::to_string(index) + "] does not exist (" + list +
+                                " has points 0.." + std::to_string(l.points.size() - 1) + ")");
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw std::invalid_argument("point " + list + "[" + std::to_string(index) + "]=" + format_point(p, 3) +
+                                " is not finite");
+  l.points[index] = p;
+}
+
+void State::set_points(const std::string& list, const std::vector<spline::Vec3>& points) {
+  const PointList& l = find_list(list);
+  if (points.size() != l.points.size())
+    throw std::invalid_argument(std::to_string(points.size()) + " points for " + list + ", which has " +
+                                std::to_string(l.points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) move_point(list, i, points[i]);
 }
 
 void State::toggle(const std::string& name) { set(name, flag(name) ? 0 : 1); }
@@ -103,6 +186,11 @@ std::string State::as_arguments() const {
   for (std::size_t i = 0; i < params_.size(); ++i)
     if (params_[i].value != defaults_[i])
       args += " --set " + params_[i].name + "=" + format_number(params_[i].value);
+  for (std::size_t l = 0; l < points_.size(); ++l)
+    for (std::size_t i = 0; i < points_[l].points.size(); ++i)
+      if (points_[l].points[i] != default_points_[l].points[i])
+        args += " --set " + points_[l].name + "[" + std::to_string(i) + "]=" +
+                format_point(points_[l].points[i], points_[l].dimension);
   return args;
 }
 
@@ -118,6 +206,18 @@ void validate_lab(const Lab& lab) {
   for (const Param& p : lab.params)
     if (!(p.lo <= p.value && p.value <= p.hi))
       fail("parameter " + p.name + " default " + format_number(p.value) + " outside its range");
+  for (std::size_t i = 0; i < lab.points.size(); ++i) {
+    const PointList& l = lab.points[i];
+    if (l.name.empty() || l.name.find_first_of("[]=, ") != std::string::npos)
+      fail("point list name '" + l.name + "' (needs a name without [ ] = , or spaces)");
+    if (l.points.empty()) fail("point list " + l.name + " is empty");
+    if (l.dimension != 2 && l.dimension != 3) fail("point list " + l.name + " has dimension " + std::to_string(l.dimension));
+    for (const Param& p : lab.params)
+      if (p.name == l.name) fail("'" + l.name + "' is a parameter and a point list");
+    for (std::size_t j = i + 1; j < lab.points.size(); ++j)
+      if (lab.points[j].name == l.name) fail("point list " + l.name + " twice");
+  }
+  if (lab.model && lab.points.empty()) fail("has a model but no point list for its control points");
   const std::string reserved = kReservedKeys;
   for (std::size_t i = 0; i < lab.keys.size(); ++i) {
     const unsigned char k = lab.keys[i].key;

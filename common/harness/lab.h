@@ -8,10 +8,15 @@
 // student sees in the window can be rendered again headless with --set.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <variant>
 #include <vector>
+
+#include "spline/types.h"
+#include "spline/vec.h"
 
 namespace gllab {
 
@@ -30,6 +35,29 @@ struct Param {
   std::string what;
 };
 
+/// Points the mouse drags in the window: control points, data points, tangent
+/// handles, in the lab's coordinates. They live in the State like the
+/// parameters, so display() draws them from there, `p` prints a dragged point
+/// as `--set P[3]=1.5,2`, and the same picture renders again headless.
+struct PointList {
+  std::string name;                  // "P": --set P[3]=x,y[,z]
+  std::vector<spline::Vec3> points;  // the defaults
+  std::string what;
+  /// 2: dragged in its plane z = const (z is kept); 3: dragged parallel to the screen.
+  int dimension = 2;
+};
+
+/// A curve or surface a lab edits; the alternatives of io::SplineFile, so
+/// it is written and read as a spline-core file.
+using Model = std::variant<spline::BsplineCurve, spline::BezierCurve, spline::BsplineSurface>;
+
+/// Dragged points snap to a grid of 1 / kGridPerUnit lab units: k / 1000 is
+/// the double nearest the decimal k/1000, which is what reading the printed
+/// `--set P[3]=1.234,0.5` gives back, so the window's picture renders again
+/// exactly. (k * 0.001 would not be: it can be one unit in the last place off.)
+inline constexpr double kGridPerUnit = 1000;
+inline double snap_to_grid(double v) { return std::round(v * kGridPerUnit) / kGridPerUnit; }
+
 /// A key the lab handles, listed in the help overlay. Most keys only turn
 /// one parameter; they name it and need no code:
 ///   {'s', "slices +2", "slices", +2}   adds 2, clamped to the range
@@ -45,7 +73,7 @@ struct Key {
 /// Everything display() may read. The runners own it; keyboard() changes it.
 class State {
  public:
-  State(std::vector<View> views, std::vector<Param> params);
+  State(std::vector<View> views, std::vector<Param> params, std::vector<PointList> points = {});
 
   int width = 512, height = 512;  // framebuffer size in pixels
   double time = 0;                // seconds; fixed in headless runs (--time)
@@ -69,20 +97,34 @@ class State {
   /// Throws std::invalid_argument when the name is unknown or the value is
   /// out of range, naming both.
   void set(const std::string& name, double value);
-  /// Parses "key=value" as given to --set; errors as set().
+  /// Parses "key=value" or "P[3]=x,y[,z]" as given to --set; errors as
+  /// set() and move_point().
   void set_from_text(const std::string& assignment);
+
+  const std::vector<PointList>& point_lists() const { return points_; }
+  /// The points of a list. Throws std::invalid_argument for an unknown name.
+  const std::vector<spline::Vec3>& points(const std::string& list) const;
+  /// Throws std::invalid_argument naming the list, the index and its range,
+  /// or the coordinate that is not finite.
+  void move_point(const std::string& list, std::size_t index, spline::Vec3 p);
+  /// Replaces every point of a list; the count must stay the same.
+  void set_points(const std::string& list, const std::vector<spline::Vec3>& points);
   /// Keyboard helpers: clamp to the range, wrap toggles.
   void toggle(const std::string& name);
   void step(const std::string& name, double delta);
 
-  /// The --set arguments that reproduce this state (non-default params only).
+  /// The --set arguments that reproduce this state (non-default params and
+  /// moved points only).
   std::string as_arguments() const;
 
  private:
   const Param& find(const std::string& name) const;
+  std::size_t list_index(const std::string& name) const;
+  const PointList& find_list(const std::string& name) const;
   std::vector<View> views_;
   std::vector<Param> params_;
   std::vector<double> defaults_;
+  std::vector<PointList> points_, default_points_;
   std::size_t view_ = 0;
 };
 
@@ -103,13 +145,23 @@ struct Lab {
   /// Optional: runs once, with the GL context still current, before the
   /// runner destroys it: release what init() made (buffers, lists, textures).
   std::function<void()> shutdown = nullptr;
+  /// Points the mouse can drag (display() draws them with
+  /// gllab::draw_control_points, which makes them pickable).
+  std::vector<PointList> points = {};
+  /// Optional, for labs that edit one curve or surface: that object, built
+  /// from the State. Its control points are the first point list. [Ctrl+S]
+  /// in the window writes it in the spline core's file format
+  /// (common/io/README.md); --load FILE puts a file's points back
+  /// (harness/model_file.h).
+  std::function<Model(const State&)> model = nullptr;
 };
 
 /// Each lab's .cpp defines this; both runners call it.
 Lab define_lab();
 
 /// Keys the runners keep for themselves; a lab may not use them.
-inline constexpr char kReservedKeys[] = "hvVp\x1b";
+/// \x13 is Ctrl+S (save the model as JSON).
+inline constexpr char kReservedKeys[] = "hvVp\x1b\x13";
 
 /// Checks a lab definition (views present and unique, defaults in range, no
 /// reserved or duplicate keys, every key's parameter exists). Throws

@@ -1,6 +1,9 @@
 // common/harness/options.cpp — parsing with one-line errors that name the value.
 #include "harness/options.h"
 
+#include "harness/model_file.h"
+#include "io/spline_json.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -44,6 +47,7 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == "--size") parse_size(value(), o.width, o.height);
     else if (a == out_flag) o.out = value();
     else if (a == "--set") o.sets.push_back(value());
+    else if (a == "--load") o.load = value();
     else if (a == "--time") {
       const std::string& t = value();
       char* end = nullptr;
@@ -64,7 +68,7 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
 }
 
 State make_state(const Lab& lab, const Options& options) {
-  State s(lab.views, lab.params);
+  State s(lab.views, lab.params, lab.points);
   s.width = options.width;
   s.height = options.height;
   s.time = options.time;
@@ -72,7 +76,10 @@ State make_state(const Lab& lab, const Options& options) {
   try {
     if (!options.view.empty()) s.select_view(options.view);
     for (const std::string& set : options.sets) s.set_from_text(set);
+    if (!options.load.empty()) load_model(lab, s, options.load);
   } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  } catch (const io::FileError& e) {
     throw UsageError(e.what());
   }
   return s;
@@ -116,8 +123,13 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"
       << "  --size WxH        framebuffer size in pixels (default 512x512)\n"
-      << "  --set key=value   lab parameter (repeatable; see below)\n"
-      << "  --time SECONDS    animation time (default 0)\n"
+      << "  --set key=value   lab parameter (repeatable; see below)\n";
+  if (!lab.points.empty())
+    out << "  --set P[i]=x,y    move point i of a point list (x,y,z for 3D lists)\n";
+  if (lab.model)
+    out << "  --load FILE.json  the lab's " << model_noun(lab)
+        << " from a spline file (after the --set values; [Ctrl+S] in the window writes one)\n";
+  out << "  --time SECONDS    animation time (default 0)\n"
       << "  --overlay         draw the help overlay\n\n"
       << "views:\n" << views_text(lab) << "\nparameters:\n";
   if (lab.params.empty()) out << "  (none)\n";
@@ -128,10 +140,22 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
     params.emplace_back(range.str(), p.what);
   }
   out << columns(params, 26);
+  if (!lab.points.empty()) {
+    out << "\npoint lists:\n";
+    std::vector<std::pair<std::string, std::string>> lists;
+    for (const PointList& l : lab.points)
+      lists.emplace_back(l.name + "[0.." + std::to_string(l.points.size() - 1) + "] " + std::to_string(l.dimension) + "D",
+                         l.what);
+    out << columns(lists, 26);
+  }
   if (!headless) {
     out << "\nkeys:\n  v / V   next / previous view\n  h       help overlay\n"
-        << "  p       print the command that renders this state headless\n  Esc     quit\n";
+        << "  p       print the command that renders this state headless\n";
+    if (lab.model) out << "  Ctrl+S  save the " << model_noun(lab)
+                       << " as <lab>__<view>.json and print the command that renders it\n";
+    out << "  Esc     quit\n";
     for (const Key& k : lab.keys) out << "  " << k.key << "       " << k.what << '\n';
+    if (!lab.points.empty()) out << "\nmouse:\n  drag a point with the left button (its coordinates show while it moves)\n";
   }
   return out.str();
 }

@@ -21,6 +21,7 @@ struct Options {
   int width = 512, height = 512;    // --size WxH
   std::string out;                  // --out FILE (headless), --capture FILE (window)
   std::vector<std::string> sets;    // --set key=value, in order
+  std::string load;                 // --load FILE: the lab's curve or surface (model_file.h)
   double time = 0;                  // --time SECONDS
   bool overlay = false;             // --overlay: draw the help overlay
   bool list_views = false;
@@ -35,7 +36,8 @@ Options parse_options(const std::vector<std::string>& args, Runner runner);
 /// Parses "WxH" with 1 <= W, H <= kMaxSize. Throws UsageError.
 void parse_size(const std::string& text, int& width, int& height);
 
-/// The State for these options: view selected, --set applied. Throws UsageError.
+/// The State for these options: view selected, --set applied, then --load.
+/// Throws UsageError (a bad file too: it is input).
 State make_state(const Lab& lab, const Options& options);
 
 std::string usage_text(const Lab& lab, const std::string& program, Runner runner);

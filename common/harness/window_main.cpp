@@ -1,11 +1,14 @@
 // common/harness/window_main.cpp — <lab>: the lab in a freeglut window.
 //
 // Keys of the runner: [v]/[V] view, [h] help overlay, [p] print the headless
-// command for what is on screen, [Esc] quit. Everything else goes to the lab.
+// command for what is on screen, [Ctrl+S] save the lab's curve or surface
+// (model_file.h), [Esc] quit. Everything else goes to the lab. The left
+// mouse button drags the points of the lab's point lists (gl/pick.h).
 #include <X11/Xlib.h>
 #include <GL/freeglut.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -15,8 +18,11 @@
 
 #include "gl/check.h"
 #include "gl/gl.h"
+#include "gl/pick.h"
+#include "gl/text.h"
 #include "harness/frame.h"
 #include "harness/lab.h"
+#include "harness/model_file.h"
 #include "harness/options.h"
 #include "image/image.h"
 
@@ -32,7 +38,12 @@ struct WindowState {
   int exit_status = 0;
   double start_time = 0;                // --time: where an animated lab's clock starts
   bool shut_down = false;               // lab.shutdown() has run
+  std::optional<gllab::Pickable> drag;  // the point the left button holds
+  std::string notice;                   // one line for the user (a file saved), until the next key
 };
+
+// How near (pixels) the mouse must be to a point to grab it.
+constexpr double kPickPixels = 12;
 WindowState* g_window = nullptr;
 
 void update_title() {
@@ -48,8 +59,19 @@ void quit(int status) {
   glutLeaveMainLoop();
 }
 
+// "P[3] = (1.234, 0.5)" for the point being dragged.
+std::string drag_text(const WindowState& w) {
+  const gllab::Pickable& d = *w.drag;
+  const gllab::spline::Vec3 p = w.state->points(d.list)[d.index];
+  char text[160];
+  if (d.dimension == 3) std::snprintf(text, sizeof text, "%s[%zu] = (%.3f, %.3f, %.3f)", d.list.c_str(), d.index, p.x, p.y, p.z);
+  else std::snprintf(text, sizeof text, "%s[%zu] = (%.3f, %.3f)", d.list.c_str(), d.index, p.x, p.y);
+  return text;
+}
+
 void display() {
   WindowState& w = *g_window;
+  gllab::clear_pickables();
   gllab::draw_frame(w.lab, *w.state);
   for (std::string& e : gllab::take_frame_errors()) {
     if (std::find(w.errors.begin(), w.errors.end(), e) != w.errors.end()) continue;  // shown already
@@ -57,6 +79,8 @@ void display() {
     w.errors.push_back(std::move(e));
   }
   if (!w.errors.empty()) gllab::draw_error_lines(w.errors);
+  if (w.drag) gllab::draw_text_panel(8, w.state->height - 32, {drag_text(w)}, {1.f, 1.f, 0.6f});
+  else if (!w.notice.empty()) gllab::draw_text_panel(8, w.state->height - 32, {w.notice}, {0.7f, 1.f, 0.7f});
   if (!w.capture.empty()) {
     // Read the back buffer: exactly what the lab drew, before the swap.
     glFinish();
@@ -86,8 +110,27 @@ void keyboard(unsigned char key, int, int) {
   WindowState& w = *g_window;
   gllab::State& s = *w.state;
   w.errors.clear();
+  w.notice.clear();
   switch (key) {
     case 27: quit(0); return;
+    case 19: {  // Ctrl+S: the lab's curve or surface as a spline file
+      if (!w.lab.model) return;
+      const std::string file = gllab::model_file_name(w.lab, s);
+      try {
+        gllab::save_model(w.lab, s, file);
+      } catch (const std::exception& e) {
+        w.errors.push_back(e.what());
+        std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.what());
+        glutPostRedisplay();
+        return;
+      }
+      // The --set values stay: --load checks the file against them.
+      std::printf("./lab render %s %s --load %s --out %s.png\n", w.lab.id.c_str(), s.as_arguments().c_str(),
+                  file.c_str(), s.view().c_str());
+      std::fflush(stdout);
+      w.notice = "saved " + file + " (the command is on stdout)";
+      break;
+    }
     case 'h': s.help = !s.help; break;
     case 'v': s.next_view(+1); break;
     case 'V': s.next_view(-1); break;
@@ -103,6 +146,38 @@ void keyboard(unsigned char key, int, int) {
     default:
       if (!gllab::apply_key(w.lab, s, key)) return;
   }
+  update_title();
+  glutPostRedisplay();
+}
+
+// GLUT gives window pixels with y down; GL's window coordinates have y up.
+double gl_y(int y) { return g_window->state->height - 1 - y; }
+
+void mouse(int button, int button_state, int x, int y) {
+  WindowState& w = *g_window;
+  if (button != GLUT_LEFT_BUTTON) return;
+  if (button_state == GLUT_DOWN) {
+    w.drag = gllab::nearest_pickable(x, gl_y(y), kPickPixels);
+  } else if (w.drag) {
+    std::printf("%s\n", drag_text(w).c_str());  // where it was let go
+    std::fflush(stdout);
+    w.drag.reset();
+  }
+  glutPostRedisplay();
+}
+
+// Moves the held point under the mouse, snapped to the grid (lab.h) so that
+// the printed --set line reproduces it exactly.
+void motion(int x, int y) {
+  WindowState& w = *g_window;
+  if (!w.drag) return;
+  const std::optional<gllab::spline::Vec3> to = gllab::drag_to(*w.drag, x, gl_y(y));
+  if (!to) return;
+  using gllab::snap_to_grid;
+  const gllab::spline::Vec3 p = {snap_to_grid(to->x), snap_to_grid(to->y),
+                                 w.drag->dimension == 3 ? snap_to_grid(to->z) : w.drag->point.z};
+  w.errors.clear();
+  w.state->move_point(w.drag->list, w.drag->index, p);
   update_title();
   glutPostRedisplay();
 }
@@ -192,6 +267,9 @@ int main(int argc, char** argv) {
   glutDisplayFunc(display);
   glutReshapeFunc(reshape);
   glutKeyboardFunc(keyboard);
+  glutMouseFunc(mouse);
+  glutMotionFunc(motion);
+  gllab::enable_picking(true);
   glutCloseFunc(shut_down_lab);
   if (window.lab.animated && window.capture.empty()) glutTimerFunc(16, tick, 0);
   glutMainLoop();

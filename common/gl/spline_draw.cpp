@@ -1,0 +1,256 @@
+// common/gl/spline_draw.cpp — spline_draw.h: the core's results, handed to GL.
+#include "gl/spline_draw.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gl/gl.h"
+#include "gl/pick.h"
+#include "gl/scene.h"
+
+namespace gllab {
+
+namespace {
+
+// Unlit lines and points in one colour; the destructor restores the state.
+struct Ink {
+  Ink(Rgb colour, float line_width, float point_size = 1.f) {
+    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_TEXTURE_2D);
+    glColor3f(colour.r, colour.g, colour.b);
+    glLineWidth(line_width);
+    glPointSize(point_size);
+  }
+  ~Ink() { glPopAttrib(); }
+  Ink(const Ink&) = delete;
+  Ink& operator=(const Ink&) = delete;
+};
+
+void vertex(const spline::Vec3& p) { glVertex3d(p.x, p.y, p.z); }
+
+Rgb blend(Rgb a, Rgb b, double f) {
+  const auto mix = [f](float x, float y) { return static_cast<float>(x + (y - x) * f); };
+  return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
+}
+
+void draw_levels(const std::vector<std::vector<spline::Vec3>>& levels, const spline::Vec3& point, Rgb first,
+                 Rgb last) {
+  const std::size_t n = levels.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    const Rgb c = blend(first, last, n > 1 ? static_cast<double>(j) / (n - 1) : 0.0);
+    if (levels[j].size() > 1) draw_polyline(levels[j], c, j == 0 ? 1.5f : 1.f);
+    draw_dots(levels[j], c, j == 0 ? 7.f : 5.f);
+  }
+  draw_dots({point}, last, 10.f);
+}
+
+}  // namespace
+
+// ---- points and polygons ----------------------------------------------------
+
+void draw_polyline(const std::vector<spline::Vec3>& points, Rgb colour, float width, bool closed) {
+  Ink ink(colour, width);
+  glBegin(closed ? GL_LINE_LOOP : GL_LINE_STRIP);
+  for (const spline::Vec3& p : points) vertex(p);
+  glEnd();
+}
+
+void draw_dashed_polyline(const std::vector<spline::Vec3>& points, Rgb colour, float width) {
+  Ink ink(colour, width);
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(2, 0x3333);  // 4 pixels on, 4 off (each bit twice)
+  glBegin(GL_LINE_STRIP);
+  for (const spline::Vec3& p : points) vertex(p);
+  glEnd();
+}
+
+void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size) {
+  Ink ink(colour, 1.f, size);
+  glBegin(GL_POINTS);
+  for (const spline::Vec3& p : points) vertex(p);
+  glEnd();
+}
+
+void draw_control_points(const State& state, const std::string& list, Rgb colour, float size, bool numbered) {
+  const std::vector<spline::Vec3>& points = state.points(list);
+  int dimension = 2;
+  for (const PointList& l : state.point_lists())
+    if (l.name == list) dimension = l.dimension;
+  draw_dots(points, colour, size);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    register_pickable(list, i, points[i], dimension);
+    if (numbered) draw_label(points[i].x, points[i].y, points[i].z, std::to_string(i), colour, 12, -12);
+  }
+}
+
+void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour) {
+  draw_dashed_polyline(P, colour, 1.f);
+  draw_dots(P, colour, 6.f);
+}
+
+void draw_control_net(const std::vector<spline::Vec3>& P, int rows, int columns, Rgb colour) {
+  Ink ink(colour, 1.f, 5.f);
+  for (int i = 0; i < rows; ++i) {
+    glBegin(GL_LINE_STRIP);
+    for (int j = 0; j < columns; ++j) vertex(P[static_cast<std::size_t>(i) * columns + j]);
+    glEnd();
+  }
+  for (int j = 0; j < columns; ++j) {
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < rows; ++i) vertex(P[static_cast<std::size_t>(i) * columns + j]);
+    glEnd();
+  }
+  glBegin(GL_POINTS);
+  for (const spline::Vec3& p : P) vertex(p);
+  glEnd();
+}
+
+// ---- curves -------------------------------------------------------------------
+
+void draw_curve(const std::function<spline::Vec3(double)>& curve, double a, double b, Rgb colour, float width,
+                double tolerance) {
+  spline::FlattenOptions options;
+  options.tolerance = tolerance;
+  std::vector<spline::Vec3> points;
+  for (const spline::CurveSample& s : spline::flatten_curve(curve, a, b, options)) points.push_back(s.point);
+  draw_polyline(points, colour, width);
+}
+
+void draw_curve(const spline::BsplineCurve& curve, Rgb colour, float width, double tolerance) {
+  // Pieces between the interior knots of multiplicity p + 1, where the curve
+  // jumps (seed 003, case D); each piece ends with its left limit.
+  const spline::ParamInterval dom = spline::domain(curve);
+  std::vector<double> breaks = {dom.a};
+  for (int i = curve.p + 1; i <= curve.n(); ++i)
+    if (curve.U[i] > breaks.back() && curve.U[i] < dom.b &&
+        spline::knot_multiplicity(curve.U, curve.U[i]) > curve.p)
+      breaks.push_back(curve.U[i]);
+  breaks.push_back(dom.b);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double a = breaks[k], b = breaks[k + 1];
+    draw_curve(
+        [&](double u) {
+          return spline::curve_point(curve, u, u == b ? spline::Side::Left : spline::Side::Right);
+        },
+        a, b, colour, width, tolerance);
+  }
+}
+
+void draw_curve(const spline::BezierCurve& curve, Rgb colour, float width, double tolerance) {
+  draw_curve([&](double t) { return spline::bezier_point(curve, t); }, curve.a, curve.b, colour, width, tolerance);
+}
+
+void draw_knot_markers(const spline::BsplineCurve& curve, Rgb colour, bool show_multiplicity) {
+  const spline::ParamInterval dom = spline::domain(curve);
+  Ink ink(colour, 1.5f);
+  double last = -HUGE_VAL;
+  for (double u : curve.U) {
+    if (u == last || u < dom.a || u > dom.b) continue;
+    last = u;
+    const spline::Vec3 c = spline::curve_point(curve, u);
+    // A diamond of 5 pixels: its size in lab units from the current matrices.
+    GLdouble model[16], projection[16];
+    GLint viewport[4];
+    glGetDoublev(GL_MODELVIEW_MATRIX, model);
+    glGetDoublev(GL_PROJECTION_MATRIX, projection);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    GLdouble wx, wy, wz;
+    if (gluProject(c.x, c.y, c.z, model, projection, viewport, &wx, &wy, &wz) != GL_TRUE) continue;
+    glBegin(GL_LINE_LOOP);
+    for (const auto& d : {std::pair{5, 0}, std::pair{0, 5}, std::pair{-5, 0}, std::pair{0, -5}}) {
+      GLdouble ox, oy, oz;
+      gluUnProject(wx + d.first, wy + d.second, wz, model, projection, viewport, &ox, &oy, &oz);
+      glVertex3d(ox, oy, oz);
+    }
+    glEnd();
+    const int m = spline::knot_multiplicity(curve.U, u);
+    if (show_multiplicity && m > 1) draw_label(c.x, c.y, c.z, "x" + std::to_string(m), colour, 0, 14);
+  }
+}
+
+void draw_de_casteljau(const spline::DeCasteljau& scheme, Rgb first, Rgb last) {
+  draw_levels(scheme.levels, scheme.point, first, last);
+}
+
+void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb last) {
+  draw_levels(construction.levels, construction.point, first, last);
+}
+
+// ---- meshes -----------------------------------------------------------------------
+
+void draw_mesh(const spline::Mesh& mesh) {
+  glBegin(GL_TRIANGLES);
+  for (const auto& t : mesh.triangles)
+    for (int k : t) {
+      const spline::Vec3& n = mesh.normals[k];
+      glNormal3d(n.x, n.y, n.z);
+      vertex(mesh.positions[k]);
+    }
+  glEnd();
+}
+
+void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width) {
+  Ink ink(colour, width);
+  glBegin(GL_LINES);
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      vertex(mesh.positions[t[e]]);
+      vertex(mesh.positions[t[(e + 1) % 3]]);
+    }
+  glEnd();
+}
+
+void draw_normal_needles(const spline::Mesh& mesh, double length, Rgb colour, int every) {
+  Ink ink(colour, 1.f);
+  glBegin(GL_LINES);
+  for (std::size_t k = 0; k < mesh.positions.size(); k += static_cast<std::size_t>(std::max(1, every))) {
+    vertex(mesh.positions[k]);
+    vertex(mesh.positions[k] + length * spline::normalized(mesh.normals[k]));
+  }
+  glEnd();
+}
+
+// ---- plots ----------------------------------------------------------------------
+
+spline::Vec3 PlotFrame::at(double x, double y) const {
+  return {left + (x - x0) / (x1 - x0) * (right - left), bottom + (y - y0) / (y1 - y0) * (top - bottom), 0};
+}
+
+void draw_plot_axes(const PlotFrame& frame, Rgb colour, const std::string& title) {
+  draw_polyline({{frame.left, frame.bottom, 0}, {frame.right, frame.bottom, 0}, {frame.right, frame.top, 0},
+                 {frame.left, frame.top, 0}},
+                blend(colour, {0.f, 0.f, 0.f}, 0.4), 1.f, true);
+  if (frame.y0 < 0 && frame.y1 > 0) draw_dashed_polyline({frame.at(frame.x0, 0), frame.at(frame.x1, 0)}, colour);
+  if (!title.empty()) draw_label((frame.left + frame.right) / 2, frame.top, 0, title, colour, 0, -12);
+}
+
+void draw_plot_function(const PlotFrame& frame, const std::function<double(double)>& f, Rgb colour, float width,
+                        int samples) {
+  // Clip to the box: a point outside ends the strip, the next inside starts one.
+  Ink ink(colour, width);
+  bool open = false;
+  for (int k = 0; k <= samples; ++k) {
+    const double x = frame.x0 + (frame.x1 - frame.x0) * k / samples;
+    const double y = f(x);
+    const bool inside = std::isfinite(y) && y >= std::min(frame.y0, frame.y1) && y <= std::max(frame.y0, frame.y1);
+    if (inside && !open) glBegin(GL_LINE_STRIP), open = true;
+    if (inside) vertex(frame.at(x, y));
+    if (!inside && open) glEnd(), open = false;
+  }
+  if (open) glEnd();
+}
+
+void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb colour) {
+  const double h = 0.04 * (frame.top - frame.bottom);
+  Ink ink(colour, 1.5f);
+  glBegin(GL_LINES);
+  for (double x : xs) {
+    const spline::Vec3 p = frame.at(x, frame.y0);
+    glVertex3d(p.x, frame.bottom, 0);
+    glVertex3d(p.x, frame.bottom - h, 0);
+  }
+  glEnd();
+}
+
+}  // namespace gllab
