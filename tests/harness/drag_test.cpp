@@ -1,0 +1,133 @@
+// tests/harness/drag_test.cpp — the mouse drags points in a real window (Xvfb,
+// driven by xdotool), and what the window prints renders the same headless.
+//
+// Where the expected numbers come from (not from the code under test): GLUT
+// reports integer pixels (x, y) with y down; the runner uses GL window
+// coordinates (x, 511 - y); drag_lab's projection is ortho_fit(512, 512, 3, 3),
+// i.e. glOrtho(-3, 3, -3, 3), which maps window x to -3 + 6 x / 512 and
+// window y to -3 + 6 y / 512 (the OpenGL spec's viewport transform inverted);
+// then the cell's own translation and rotation are undone. Dropping P[1] at
+// GLUT pixel (160, 128): x = -3 + 6 * 160 / 512 + 1.5 = 0.375,
+// y = -3 + 6 * 383 / 512 = 1.48828125, snapped to 1/1000: 1.488.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "image/compare.h"
+#include "image/image.h"
+#include "test_support.h"
+
+namespace {
+
+using gllab::testing::ScratchDir;
+
+const std::string kDragLab = GLLAB_DRAG_LAB;                    // the window program
+const std::string kDragLabHeadless = GLLAB_DRAG_LAB_HEADLESS;   // the headless one
+
+// Runs the window program under Xvfb in `dir` and sends it `actions`
+// (xdotool words after the window is found). Returns what the program printed.
+gllab::ProcessResult drive_window(const ScratchDir& dir, const std::string& actions) {
+  // xdotool search --sync waits until the window is mapped; the lab is the
+  // only window on the server (no window manager: it sits at 0, 0).
+  const std::string script = "cd '" + dir.path().string() + "' && '" + kDragLab + "' & program=$!; " +
+                             "window=$(xdotool search --sync --name 'drag lab'); " +
+                             "xdotool mousemove --window $window 256 256 sleep 0.3 " + actions + "; " +
+                             "wait $program";
+  return gllab::run_process({"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", "/bin/sh", "-c", script},
+                            {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks (lab_views_test.cpp)
+}
+
+// Where drag_lab draws P[1] = (0, 1) in GLUT pixels: x = (0 - 1.5 + 3) * 512 / 6 = 128,
+// GL window y = (1 + 3) * 512 / 6 = 341.33, GLUT y = 511 - 341.33 = 169.67.
+constexpr int kP1X = 128, kP1Y = 170;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> words_of(const std::string& line) {
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+TEST(Drag, MouseMovesAPointAndPPrintsTheSetLine) {
+  ScratchDir dir("drag");
+  const gllab::ProcessResult r = drive_window(
+      dir, "mousemove --window $window " + std::to_string(kP1X) + " " + std::to_string(kP1Y) +
+               " mousedown 1 mousemove --window $window 200 150 sleep 0.1 mousemove --window $window 160 128"
+               " sleep 0.2 mouseup 1 sleep 0.2 key p sleep 0.2 key Escape");
+  ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 2u) << r.out;
+  EXPECT_EQ(lines[0], "P[1] = (0.375, 1.488)");  // printed when the button is let go
+  EXPECT_EQ(lines[1], "./lab render drag_lab --view default --set P[1]=0.375,1.488 --out default.png");
+}
+
+TEST(Drag, APointOfA3dListMovesParallelToTheScreen) {
+  // The right half is translated by +1.5 in x and turned by glRotatef(-60, 1,
+  // 0, 0): (y, z) -> (y', z') = (c y - s z, s y + c z), c = cos(-60 deg) = 1/2,
+  // s = sin(-60 deg). H[1] = (0.5, 0, 0.5) lands at x' = 2, y' = 0.433,
+  // z' = 0.25: GLUT pixel (426.7, 218.1). Dropped at GLUT (459, 218) and at
+  // the same depth z' it is x = -3 + 6 * 459 / 512 - 1.5 and, with
+  // y' = -3 + 6 * (511 - 218) / 512, (y, z) = (c y' + s z', -s y' + c z').
+  const double c = 0.5, s = -std::sqrt(3.0) / 2, y_screen = -3 + 6.0 * (511 - 218) / 512, z_eye = 0.25;
+  const auto snap = [](double v) { return std::round(v * 1000) / 1000; };
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "H[1] = (%.3f, %.3f, %.3f)", snap(-3 + 6.0 * 459 / 512 - 1.5),
+                snap(c * y_screen + s * z_eye), snap(-s * y_screen + c * z_eye));
+  ScratchDir dir("drag3d");
+  const gllab::ProcessResult r = drive_window(
+      dir, "mousemove --window $window 427 218 mousedown 1 mousemove --window $window 440 218 sleep 0.1 "
+           "mousemove --window $window 459 218 sleep 0.2 mouseup 1 sleep 0.2 key Escape");
+  ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 1u) << r.out;
+  EXPECT_EQ(lines[0], expected);
+}
+
+TEST(Drag, CtrlSSavesTheCurveAndLoadRendersWhatSetRenders) {
+  ScratchDir dir("save");
+  const gllab::ProcessResult r = drive_window(
+      dir, "mousemove --window $window " + std::to_string(kP1X) + " " + std::to_string(kP1Y) +
+               " mousedown 1 mousemove --window $window 200 150 sleep 0.1 mousemove --window $window 160 128"
+               " sleep 0.2 mouseup 1 sleep 0.2 key ctrl+s sleep 0.3 key Escape");
+  ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 2u) << r.out;
+  EXPECT_EQ(lines[1], "./lab render drag_lab --view default --set P[1]=0.375,1.488 --load drag_lab__default.json "
+                      "--out default.png");
+  ASSERT_TRUE(std::filesystem::exists(dir / "drag_lab__default.json"));
+
+  // The printed command's two ways to the same state give the same pixels.
+  const auto from_set = dir / "set.png", from_file = dir / "file.png", unmoved = dir / "unmoved.png";
+  ASSERT_EQ(gllab::run_process({kDragLabHeadless, "--set", "P[1]=0.375,1.488", "--out", from_set.string()}).exit_status, 0);
+  const gllab::ProcessResult load = gllab::run_process(
+      {kDragLabHeadless, "--load", (dir / "drag_lab__default.json").string(), "--out", from_file.string()});
+  ASSERT_EQ(load.exit_status, 0) << load.err;
+  ASSERT_EQ(gllab::run_process({kDragLabHeadless, "--out", unmoved.string()}).exit_status, 0);
+  const gllab::Image set_image = gllab::read_png(from_set.string());
+  EXPECT_EQ(gllab::compare_images(set_image, gllab::read_png(from_file.string()), 0).differing_pixels, 0);
+  // And the drag changed the picture (the comparison can fail).
+  EXPECT_GT(gllab::compare_images(set_image, gllab::read_png(unmoved.string()), 0).differing_pixels, 100);
+}
+
+TEST(Drag, HeadlessRejectsABadPointAssignmentWithOneLine) {
+  ScratchDir dir("bad");
+  const gllab::ProcessResult r =
+      gllab::run_process({kDragLabHeadless, "--set", "P[7]=1,2", "--out", (dir / "x.png").string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "drag_lab_headless: point P[7] does not exist (P has points 0..2)\n");
+}
+
+}  // namespace
