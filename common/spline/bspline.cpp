@@ -1086,6 +1086,21 @@ std::vector<double> uniform_params(const BsplineCurve& curve, int count) {
   return us;
 }
 
+std::vector<double> greville_abscissae(int p, const std::vector<double>& U) {
+  if (p < 1) fail("greville_abscissae: p=" + std::to_string(p) + " must be >= 1");
+  if (U.size() < static_cast<std::size_t>(p) + 2)
+    fail("greville_abscissae: " + std::to_string(U.size()) + " knots for degree " + std::to_string(p) +
+         " leave no control point (at least p + 2 = " + std::to_string(p + 2) + " needed)");
+  const std::size_t count = U.size() - static_cast<std::size_t>(p) - 1;
+  std::vector<double> xi(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    double sum = 0;
+    for (int k = 1; k <= p; ++k) sum += U[i + static_cast<std::size_t>(k)];
+    xi[i] = sum / p;
+  }
+  return xi;
+}
+
 // ---- knot insertion, refinement, decomposition -------------------------------
 
 namespace {

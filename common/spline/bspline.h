@@ -180,6 +180,15 @@ void curve_points(const BsplineCurve& curve, const std::vector<double>& sorted_u
 /// (the last is exactly U[n+1]).
 std::vector<double> uniform_params(const BsplineCurve& curve, int count);
 
+/// The Greville abscissae (knot averages) xi_i = (U[i+1] + ... + U[i+p]) / p,
+/// i = 0..n, for n = U.size() - p - 2. A B-spline with the control values xi_i
+/// is the parameter itself on the domain: sum_i xi_i N_{i,p}(u) = u (linear
+/// precision, from Marsden's identity; de Boor, "A Practical Guide to
+/// Splines", rev. ed. 2001, ch. IX). common/gl/glu_nurbs.cpp feeds them to
+/// GLU as a texture-coordinate map so that every GLU vertex tells its u.
+/// Throws for p < 1 or U.size() < p + 2 (no control point).
+std::vector<double> greville_abscissae(int p, const std::vector<double>& U);
+
 // ---- knot insertion, refinement, decomposition -------------------------------
 
 /// One insertion of the knot t by the seeds' formula (seed 000 §1.6, Boehm):

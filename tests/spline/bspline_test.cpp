@@ -1033,5 +1033,36 @@ TEST(CurvePoint, DomainEndsEvaluateAndOutsideThrows) {
   EXPECT_ERROR_HAS(de_boor(c, 2.0), "u=2 is outside the domain [0, 1]");
 }
 
+// ---- Greville abscissae ---------------------------------------------------------
+
+TEST(GrevilleAbscissae, KnotAveragesOfTheNurbsBookP68Knots) {
+  // U = {0,0,0,1,2,3,4,4,5,5,5}, p = 2 (The NURBS Book, p. 68): xi_i is the
+  // average of U[i+1], U[i+2], worked out by hand: 0, 1/2, 3/2, 5/2, 7/2, 4, 9/2, 5.
+  const std::vector<double> xi = greville_abscissae(2, {0, 0, 0, 1, 2, 3, 4, 4, 5, 5, 5});
+  const std::vector<double> expected = {0, 0.5, 1.5, 2.5, 3.5, 4, 4.5, 5};
+  EXPECT_EQ(xi, expected);
+}
+
+TEST(GrevilleAbscissae, AsControlValuesReproduceTheParameter) {
+  // Property (linear precision): the curve with control values xi_i is u
+  // itself on the domain, for clamped and unclamped knots and any multiplicity.
+  CurveMaker maker(4242);
+  for (int k = 0; k < kRandomCurves; ++k) {
+    BsplineCurve c = maker.make(false, k % 2 == 0, 1);
+    const std::vector<double> xi = greville_abscissae(c.p, c.U);
+    ASSERT_EQ(xi.size(), c.P.size());
+    for (std::size_t i = 0; i < xi.size(); ++i) c.P[i] = {xi[i], 0, 0};
+    // Rounding of the sums, relative to the largest knot magnitude.
+    const double tol = kRounding * std::max({1.0, std::abs(c.U.front()), std::abs(c.U.back())});
+    for (double u : samples(c)) ASSERT_NEAR(curve_point(c, u).x, u, tol) << "curve " << k << " at u=" << u;
+  }
+}
+
+TEST(GrevilleAbscissae, DegreeBelowOneOrTooFewKnotsThrow) {
+  EXPECT_ERROR_HAS(greville_abscissae(0, {0, 1}), "greville_abscissae: p=0 must be >= 1");
+  EXPECT_ERROR_HAS(greville_abscissae(3, {0, 0, 1, 1}),
+                   "greville_abscissae: 4 knots for degree 3 leave no control point (at least p + 2 = 5 needed)");
+}
+
 }  // namespace
 }  // namespace gllab::spline
