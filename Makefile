@@ -3,8 +3,10 @@
 # make directly.
 #
 #   make             configure (Release) and build into build/
-#   make run         render every lab view headless, compare with
-#                    reference_images/, print a table; renders + heat maps in out/
+#   make run         grade this build: render every lab view headless, compare
+#                    with reference_images/, print a table; the report (renders,
+#                    heat maps, results.json/.csv) goes to out/index.html
+#   make grade GRADE_ARGS="--images DIR"   labgrade with these arguments
 #   make test        build and run the whole test suite through CTest
 #   make references  re-render reference_images/ and reference_images/MANIFEST
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
@@ -20,7 +22,7 @@ SANITIZE_BUILD ?= build-sanitize
 BENCH_BUILD ?= build-bench
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build run test references sanitize bench clean
+.PHONY: all build run grade test references sanitize bench clean
 
 all: build
 
@@ -31,7 +33,10 @@ build: $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 run: build
-	$(BUILD)/bin/labrun --out out
+	$(BUILD)/bin/labgrade --build $(BUILD) --report out
+
+grade: build
+	$(BUILD)/bin/labgrade $(GRADE_ARGS)
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)

@@ -1,13 +1,12 @@
-// tools/labrun.cpp — render every lab view headless and compare it with its
-// reference image. `make run` (and so `./lab run`) calls this; so does the
-// CTest test of each view, and `make references` (--update-references).
+// tools/labrun.cpp — the reference images themselves: `make references`
+// renders them (--update-references), the repository test checks that every
+// lab view has one and every one a view (--check-references). Grading renders
+// against them is labgrade's job (tools/labgrade.cpp, `./lab run`).
 //
-//   labrun [--labs 01,13] [--views default,wireframe] [--out DIR]
-//          [--bin DIR] [--refs DIR] [--env NAME=VALUE]...
-//   labrun --update-references     render into reference_images/ + MANIFEST
-//   labrun --check-references      every view has a reference, no stray ones
+//   labrun --update-references [--labs 01,13] [--views NAME,...] [--refs DIR] [--env NAME=VALUE]...
+//   labrun --check-references  [--bin DIR] [--refs DIR]
 //
-// Exit status: 0 all pass, 1 some view failed, 2 usage or input error.
+// Exit status: 0 done / all present, 1 a reference missing or stray, 2 usage or input error.
 #include <unistd.h>
 
 #include <cstdio>
@@ -19,16 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "image/compare.h"
-#include "image/image.h"
 #include "process.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// Tolerance written to MANIFEST by --update-references and read back when
-// comparing (calibrated in tests/harness/tolerance_test.cpp and README.md):
+// Tolerance written to MANIFEST by --update-references and read back by
+// labgrade (calibrated in tests/grading/ and README.md "Grading"):
 //  - lighting differs between llvmpipe and softpipe by at most 8 per channel;
 //  - softpipe draws one-pixel lines one pixel over (up to 0.4% of a
 //    wireframe view's pixels), which a shift radius of 1 excuses;
@@ -40,7 +37,7 @@ constexpr double kDefaultMaxDifferingShare = 0.0005;
 struct Settings {
   std::vector<std::string> labs;  // empty: all
   std::set<std::string> views;    // empty: all
-  fs::path bin, refs, out = "out";
+  fs::path bin, refs;
   std::vector<std::string> env;
   bool update = false, check = false;
 };
@@ -91,8 +88,7 @@ Settings parse(int argc, char** argv) {
       for (const std::string& l : split(value(), ',')) s.labs.push_back(resolve_lab(l));
     } else if (a == "--views") {
       for (const std::string& v : split(value(), ',')) s.views.insert(v);
-    } else if (a == "--out") s.out = value();
-    else if (a == "--bin") s.bin = value();
+    } else if (a == "--bin") s.bin = value();
     else if (a == "--refs") s.refs = value();
     else if (a == "--env") {
       const std::string e = value();
@@ -103,20 +99,19 @@ Settings parse(int argc, char** argv) {
     else if (a == "--check-references") s.check = true;
     else if (a == "--help" || a == "-h") {
       std::puts(
-          "usage: labrun [--labs 01,13] [--views NAME,...] [--out DIR] [--bin DIR] [--refs DIR]\n"
+          "usage: labrun --update-references [--labs 01,13] [--views NAME,...] [--refs DIR]\n"
           "              [--env NAME=VALUE]...\n"
-          "       labrun --update-references | --check-references\n\n"
-          "Renders every view of every lab with build/bin/<lab>_headless, compares each\n"
-          "with reference_images/<lab>__<view>.png using the tolerance in\n"
-          "reference_images/MANIFEST, prints a table and writes the renders and diff\n"
-          "heat maps to --out (default out/): <lab>__<view>.png, <lab>__<view>.diff.png.\n\n"
-          "  --update-references  render into the reference folder and rewrite MANIFEST\n"
+          "       labrun --check-references [--bin DIR] [--refs DIR]\n\n"
+          "  --update-references  render every view of the labs with build/bin/<lab>_headless\n"
+          "                       into the reference folder and rewrite its MANIFEST\n"
           "  --check-references   fail when a view has no reference or a reference no view\n"
-          "  --env NAME=VALUE     set for the renderer, e.g. GALLIUM_DRIVER=softpipe\n\n"
-          "Exit status: 0 all passed, 1 some failed, 2 usage or input error.");
+          "  --env NAME=VALUE     set for the renderer\n\n"
+          "To grade renders against the references: labgrade (./lab run, ./lab grade).\n"
+          "Exit status: 0 done, 1 a reference missing or stray, 2 usage or input error.");
       std::exit(0);
     } else throw UsageError("unknown option '" + a + "' (try --help)");
   }
+  if (!s.update && !s.check) throw UsageError("give --update-references or --check-references (try --help)");
   if (s.labs.empty()) s.labs = all_labs();
   return s;
 }
@@ -131,31 +126,6 @@ std::vector<std::string> views_of(const Settings& s, const std::string& lab) {
   for (const std::string& v : split(r.out, '\n'))
     if (s.views.empty() || s.views.count(v)) views.push_back(v);
   return views;
-}
-
-std::map<std::string, std::string> read_manifest(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError("cannot read " + path.string() + " (run: make references)");
-  std::map<std::string, std::string> m;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const auto colon = line.find(": ");
-    if (colon != std::string::npos) m[line.substr(0, colon)] = line.substr(colon + 2);
-  }
-  return m;
-}
-
-gllab::Tolerance tolerance_from(const std::map<std::string, std::string>& m, const fs::path& path) {
-  gllab::Tolerance t;
-  try {
-    t.channel_threshold = std::stoi(m.at("tolerance_channel_threshold"));
-    t.max_differing_share = std::stod(m.at("tolerance_max_differing_share"));
-    t.shift_radius = std::stoi(m.at("tolerance_shift_radius"));
-  } catch (const std::exception&) {
-    throw UsageError(path.string() + ": missing or malformed tolerance_channel_threshold, "
-                     "tolerance_shift_radius or tolerance_max_differing_share");
-  }
-  return t;
 }
 
 std::string reference_name(const std::string& lab, const std::string& view) {
@@ -231,64 +201,13 @@ int update_references(const Settings& s) {
   return 0;
 }
 
-int compare_all(const Settings& s) {
-  const fs::path manifest = s.refs / "MANIFEST";
-  const gllab::Tolerance tolerance = tolerance_from(read_manifest(manifest), manifest);
-  fs::create_directories(s.out);
-  std::printf("%-22s %-20s %-6s %10s %20s %9s\n", "lab", "view", "result", "differing", "unexcused (share)",
-              "max delta");
-  int passed = 0, failed = 0;
-  for (const std::string& lab : s.labs) {
-    for (const std::string& view : views_of(s, lab)) {
-      const std::string name = reference_name(lab, view);
-      const fs::path render = s.out / name;
-      const fs::path heat = s.out / (lab + "__" + view + ".diff.png");
-      std::string failure;
-      gllab::Comparison c;
-      const gllab::ProcessResult r = gllab::run_process(
-          {renderer_of(s, lab).string(), "--view", view, "--out", render.string()}, s.env);
-      if (r.exit_status != 0) {
-        failure = r.started ? gllab::first_line(r.err) : r.err;
-        if (failure.empty()) failure = "renderer exited with status " + std::to_string(r.exit_status);
-      } else if (!fs::exists(s.refs / name)) {
-        failure = "no reference image " + (s.refs / name).string() + " (run: make references)";
-      } else {
-        try {
-          const gllab::Image reference = gllab::read_png((s.refs / name).string());
-          const gllab::Image image = gllab::read_png(render.string());
-          c = gllab::compare_images(reference, image, tolerance.channel_threshold, tolerance.shift_radius);
-          gllab::write_png(heat.string(), gllab::heat_map(reference, image, tolerance.channel_threshold, tolerance.shift_radius), 1);
-          if (!c.passes(tolerance)) failure = "differs beyond tolerance (heat map: " + heat.string() + ")";
-        } catch (const std::exception& e) {
-          failure = e.what();
-        }
-      }
-      char unexcused[64];
-      std::snprintf(unexcused, sizeof unexcused, "%lld (%.3f%%)", c.mismatched_pixels, 100.0 * c.mismatched_share());
-      const bool compared = c.total_pixels > 0;
-      std::printf("%-22s %-20s %-6s %10s %20s %9s\n", lab.c_str(), view.c_str(), failure.empty() ? "pass" : "FAIL",
-                  compared ? std::to_string(c.differing_pixels).c_str() : "-", compared ? unexcused : "-",
-                  compared ? std::to_string(c.max_delta).c_str() : "-");
-      if (!failure.empty()) std::printf("    %s\n", failure.c_str());
-      (failure.empty() ? passed : failed)++;
-    }
-  }
-  std::printf("%d views: %d passed, %d failed (tolerance: a channel off by >%d, not excused by a "
-              "%d-pixel shift, on at most %.3f%% of pixels)\n",
-              passed + failed, passed, failed, tolerance.channel_threshold, tolerance.shift_radius,
-              100.0 * tolerance.max_differing_share);
-  std::printf("renders and heat maps: %s/\n", s.out.c_str());
-  return failed ? 1 : 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     const Settings s = parse(argc, argv);
     if (s.update) return update_references(s);
-    if (s.check) return check_references(s);
-    return compare_all(s);
+    return check_references(s);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "labrun: %s\n", e.what());
     return 2;

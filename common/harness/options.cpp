@@ -48,6 +48,7 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == out_flag) o.out = value();
     else if (a == "--set") o.sets.push_back(value());
     else if (a == "--load") o.load = value();
+    else if (a == "--capture-views" && runner == Runner::kWindow) o.capture_views = value();
     else if (a == "--time") {
       const std::string& t = value();
       char* end = nullptr;
@@ -111,14 +112,17 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
   if (headless) {
     out << "usage: " << program << " --out FILE.png [--view NAME] [--size WxH] [--set key=value]...\n"
         << "       " << program << " --list-views | --info | --help\n\n"
-        << "Renders one view of the lab without a display (OSMesa) and writes a PNG.\n"
+        << "Renders one view of the lab without a display (OSMesa) and writes a PNG\n"
+        << "(--out - writes the raw frame to stdout as PAM, for graders).\n"
         << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n\n";
   } else {
     out << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
         << "       " << program << " --list-views | --help\n\n"
         << "Opens the lab in a window (freeglut). Without a display, render headless:\n"
         << "  " << program << "_headless --view NAME --out FILE.png\n"
-        << "--capture draws the first frame, writes it as PNG and exits (window smoke test).\n\n";
+        << "--capture draws the first frame, writes it as PNG and exits (window smoke test);\n"
+        << "--capture-views DIR does so for every view, as DIR/<lab>__<view>.png (graders\n"
+        << "compare window and headless renders).\n\n";
   }
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"

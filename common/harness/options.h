@@ -20,6 +20,7 @@ struct Options {
   std::string view;                 // empty: the lab's first view
   int width = 512, height = 512;    // --size WxH
   std::string out;                  // --out FILE (headless), --capture FILE (window)
+  std::string capture_views;        // --capture-views DIR (window): every view to DIR/<lab>__<view>.png
   std::vector<std::string> sets;    // --set key=value, in order
   std::string load;                 // --load FILE: the lab's curve or surface (model_file.h)
   double time = 0;                  // --time SECONDS

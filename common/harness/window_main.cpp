@@ -34,6 +34,7 @@ struct WindowState {
   std::optional<gllab::State> state;
   std::string program;
   std::string capture;                  // --capture FILE: write the first frame, exit
+  std::string capture_views;            // --capture-views DIR: every view's first frame, then exit
   std::vector<std::string> errors;      // shown on screen until the next key
   int exit_status = 0;
   double start_time = 0;                // --time: where an animated lab's clock starts
@@ -81,7 +82,7 @@ void display() {
   if (!w.errors.empty()) gllab::draw_error_lines(w.errors);
   if (w.drag) gllab::draw_text_panel(8, w.state->height - 32, {drag_text(w)}, {1.f, 1.f, 0.6f});
   else if (!w.notice.empty()) gllab::draw_text_panel(8, w.state->height - 32, {w.notice}, {0.7f, 1.f, 0.7f});
-  if (!w.capture.empty()) {
+  if (!w.capture.empty() || !w.capture_views.empty()) {
     // Read the back buffer: exactly what the lab drew, before the swap.
     glFinish();
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(w.state->width) * w.state->height * 4);
@@ -89,13 +90,23 @@ void display() {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w.state->width, w.state->height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
     int status = w.errors.empty() ? 0 : 1;
+    const std::string file = !w.capture.empty() ? w.capture
+                                                : w.capture_views + "/" + w.lab.id + "__" + w.state->view() + ".png";
     try {
-      gllab::write_png(w.capture, gllab::image_from_bottom_up(rows.data(), w.state->width, w.state->height));
+      gllab::write_png(file, gllab::image_from_bottom_up(rows.data(), w.state->width, w.state->height));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s: %s\n", w.program.c_str(), e.what());
       status = 1;
     }
-    quit(status);
+    w.exit_status = std::max(w.exit_status, status);
+    // --capture-views: the next view, until every one is written.
+    if (!w.capture_views.empty() && w.state->view_index() + 1 < w.state->views().size()) {
+      w.errors.clear();
+      w.state->next_view(+1);
+      glutPostRedisplay();
+      return;
+    }
+    quit(w.exit_status);
     return;
   }
   glutSwapBuffers();
@@ -234,6 +245,8 @@ int main(int argc, char** argv) {
     window.state->interactive = true;
     window.start_time = options.time;
     window.capture = options.out;
+    window.capture_views = options.capture_views;
+    if (!window.capture_views.empty()) window.state->select_view(window.lab.views.front().name);
   } catch (const gllab::UsageError& e) {
     return fail(2, e.what());
   } catch (const std::exception& e) {
@@ -271,7 +284,7 @@ int main(int argc, char** argv) {
   glutMotionFunc(motion);
   gllab::enable_picking(true);
   glutCloseFunc(shut_down_lab);
-  if (window.lab.animated && window.capture.empty()) glutTimerFunc(16, tick, 0);
+  if (window.lab.animated && window.capture.empty() && window.capture_views.empty()) glutTimerFunc(16, tick, 0);
   glutMainLoop();
   if (glutGetWindow() != 0) shut_down_lab();
   return window.exit_status;

@@ -54,13 +54,6 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-std::vector<std::string> words_of(const std::string& line) {
-  std::vector<std::string> words;
-  std::istringstream in(line);
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
-
 TEST(Drag, MouseMovesAPointAndPPrintsTheSetLine) {
   ScratchDir dir("drag");
   const gllab::ProcessResult r = drive_window(

@@ -44,10 +44,11 @@ std::string file_bytes(const std::filesystem::path& p) {
 
 class EveryLabView : public ::testing::TestWithParam<LabView> {
  protected:
-  std::string labrun_out() const { return (dir_.path() / "out").string(); }
-  gllab::ProcessResult labrun(std::vector<std::string> extra = {}) const {
-    std::vector<std::string> argv = {(kBinDir / "labrun").string(), "--labs", GetParam().lab,
-                                     "--views", GetParam().view, "--out", labrun_out()};
+  // labgrade grades this one view of this build, as ./lab run does for all.
+  gllab::ProcessResult labgrade(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> argv = {(kBinDir / "labgrade").string(), "--build", kBinDir.string(), "--labs",
+                                     GetParam().lab, "--views", GetParam().view, "--out",
+                                     (dir_.path() / "out").string(), "--quiet"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     return run_process(argv);
   }
@@ -60,14 +61,14 @@ TEST_P(EveryLabView, HasAReferenceImage) {
 }
 
 TEST_P(EveryLabView, MatchesItsReference) {
-  const gllab::ProcessResult r = labrun();
+  const gllab::ProcessResult r = labgrade();
   EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
 }
 
 // DESIGN.md: softpipe differs from llvmpipe only on a few line pixels; the
 // tolerance in reference_images/MANIFEST must let that pass.
 TEST_P(EveryLabView, SoftpipeRenderPassesAgainstLlvmpipeReference) {
-  const gllab::ProcessResult r = labrun({"--env", "GALLIUM_DRIVER=softpipe"});
+  const gllab::ProcessResult r = labgrade({"--env", "GALLIUM_DRIVER=softpipe"});
   EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
 }
 

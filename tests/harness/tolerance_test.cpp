@@ -4,7 +4,7 @@
 // The fixture lab (fixture_lab.cpp) draws lit polygons, lines, points and
 // text; its `mistake` parameter reproduces a wrong colour, a missing
 // primitive and a vertex moved by 1% of the frame. Its llvmpipe render is the
-// reference; each case is judged with the MANIFEST tolerance, as labrun does.
+// reference; each case is judged with the MANIFEST tolerance, as labgrade does.
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -1,0 +1,239 @@
+// tests/grading/labgrade_test.cpp — labgrade's promises (tools/labgrade.cpp
+// --help and README "Grading"): every view the references define is graded;
+// a missing render, a crash, a GL error or a hang is a failing row with its
+// reason, never a skip; exit 0 all pass, 1 some fail, 2 usage or input error;
+// the report, results.json, results.csv and the class CSV say the same.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "image/image.h"
+#include "test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gllab::run_process;
+using gllab::testing::kBinDir;
+using gllab::testing::kSourceDir;
+using gllab::testing::line_count;
+using gllab::testing::ScratchDir;
+
+constexpr int kSomeFailed = 1;  // labgrade --help: "1 some failed"
+constexpr int kUsage = 2;       // labgrade --help: "2 usage or input error"
+
+const std::string kLab = "01_immediate_mode";
+const std::vector<std::string> kViews = {"default", "invalid_polygons", "vertex_order", "wireframe"};
+const fs::path kRefs = kSourceDir / "reference_images";
+
+std::string labgrade() { return (kBinDir / "labgrade").string(); }
+
+gllab::ProcessResult grade(std::vector<std::string> args) {
+  args.insert(args.begin(), labgrade());
+  return run_process(args);
+}
+
+// The table row of a view and the reason line under it.
+std::string row_of(const std::string& out, const std::string& view) {
+  const auto at = out.find(kLab + "__" + view + " ");
+  if (at == std::string::npos) return "";
+  const auto end = out.find('\n', out.find('\n', at) + 1);
+  return out.substr(at, end - at);
+}
+
+// A references folder with lab 01's MANIFEST and the given references.
+void copy_references(const fs::path& to, const std::vector<std::string>& views) {
+  fs::copy_file(kRefs / "MANIFEST", to / "MANIFEST");
+  for (const std::string& v : views) fs::copy_file(kRefs / (kLab + "__" + v + ".png"), to / (kLab + "__" + v + ".png"));
+}
+
+// A stand-in headless program: runs `action` (a shell command) for a render.
+void write_fake_renderer(const fs::path& path, const std::string& action) {
+  std::ofstream(path) << "#!/bin/sh\n" << action << "\n";
+  fs::permissions(path, fs::perms::owner_all);
+}
+
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Labgrade, EveryViewOfThisBuildPassesItsReference) {
+  const gllab::ProcessResult r = grade({"--build", kBinDir.string(), "--labs", "01", "--quiet"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("4 views: 4 passed, 0 failed; score 100.0%"), std::string::npos) << r.out;
+}
+
+TEST(Labgrade, BrokenReferencesFailTheirRowsWithTheReason) {
+  ScratchDir refs("refs"), out("out");
+  copy_references(refs.path(), {"invalid_polygons"});
+  // default: not a PNG; wireframe: a valid PNG of the wrong size.
+  std::ofstream(refs / (kLab + "__default.png")) << "this is not a PNG\n";
+  gllab::write_png((refs / (kLab + "__wireframe.png")).string(), gllab::Image(16, 16));
+  const gllab::ProcessResult r =
+      grade({"--build", kBinDir.string(), "--refs", refs.path().string(), "--out", out.path().string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  EXPECT_NE(row_of(r.out, "default").find("cannot read the reference: read_png"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "wireframe").find("render is 512x512, the reference 16x16"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "invalid_polygons").find("pass"), std::string::npos) << r.out;
+  // The views are the references' views: vertex_order has none, so it is not graded.
+  EXPECT_EQ(row_of(r.out, "vertex_order"), "") << r.out;
+  EXPECT_NE(r.out.find("3 views: 1 passed, 2 failed"), std::string::npos) << r.out;
+  // The failing render is kept for a look (written only for failures).
+  EXPECT_TRUE(fs::exists(out / (kLab + "__wireframe.png")));
+  EXPECT_FALSE(fs::exists(out / (kLab + "__invalid_polygons.png")));
+}
+
+TEST(Labgrade, MissingManifestIsAUsageErrorOfOneLine) {
+  ScratchDir refs("refs");
+  const gllab::ProcessResult r = grade({"--build", kBinDir.string(), "--refs", refs.path().string()});
+  EXPECT_EQ(r.exit_status, kUsage);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("MANIFEST"), std::string::npos) << r.err;
+}
+
+TEST(Labgrade, BadArgumentsAreUsageErrorsOfOneLineNamingThem) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--build", kBinDir.string(), "--labs", "99"}, "unknown lab '99'"},
+      {{"--build", kBinDir.string(), "--views", "nope"}, "unknown view 'nope'"},
+      {{"--build", kBinDir.string(), "--jobs", "0"}, "--jobs '0'"},
+      {{"--build", kBinDir.string(), "--timeout", "-1"}, "--timeout '-1'"},
+      {{"--build", "/no/such/dir"}, "no build folder /no/such/dir"},
+      {{"--images", kBinDir.string(), "--build", kBinDir.string()}, "give one of --build, --images, --class"},
+      {{"--labs", "01"}, "nothing to grade"},
+      {{"--build", kBinDir.string(), "--frobnicate"}, "unknown option '--frobnicate'"},
+  };
+  for (const auto& [args, message] : cases) {
+    const gllab::ProcessResult r = grade(args);
+    EXPECT_EQ(r.exit_status, kUsage) << message;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+}
+
+TEST(Labgrade, GlErrorCrashHangAndMissingRendererAreFailingRowsWithTheReason) {
+  ScratchDir build("build");
+  // Four "labs" of one build, each broken in its own way, graded against
+  // references of that name (copies of lab 01's default view).
+  ScratchDir refs("refs");
+  fs::copy_file(kRefs / "MANIFEST", refs / "MANIFEST");
+  for (const char* lab : {"91_gl_error", "92_crash", "93_hang", "94_missing"})
+    fs::copy_file(kRefs / (kLab + "__default.png"), refs / (std::string(lab) + "__default.png"));
+  write_fake_renderer(build / "91_gl_error_headless",
+                      "exec " + gllab::testing::kFixtureLab.string() + " --set gl_error=1 \"$@\"");
+  write_fake_renderer(build / "92_crash_headless", "kill -SEGV $$");
+  write_fake_renderer(build / "93_hang_headless", "exec sleep 30");
+  const gllab::ProcessResult r = grade(
+      {"--build", build.path().string(), "--refs", refs.path().string(), "--timeout", "1", "--out", (build / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  EXPECT_NE(r.out.find("GL_INVALID_ENUM"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("crashed (signal 11)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the render took longer than 1 s (killed)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no renderer 94_missing_headless in " + build.path().string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 views: 0 passed, 4 failed; score 0.0%"), std::string::npos) << r.out;
+}
+
+TEST(Labgrade, ImageFolderIsGradedAndAWrongImageFails) {
+  ScratchDir images("images");
+  for (const std::string v : {"default", "invalid_polygons", "vertex_order"})
+    fs::copy_file(kRefs / (kLab + "__" + v + ".png"), images / (kLab + "__" + v + ".png"));
+  // vertex_order replaced by another view's picture: it must fail; wireframe is missing.
+  fs::copy_file(kRefs / (kLab + "__default.png"), images / (kLab + "__vertex_order.png"),
+                fs::copy_options::overwrite_existing);
+  const gllab::ProcessResult r = grade({"--images", images.path().string(), "--labs", "01", "--out", (images / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  EXPECT_NE(row_of(r.out, "default").find("pass"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "vertex_order").find("differs beyond tolerance"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "wireframe").find("no render " + (images / (kLab + "__wireframe.png")).string()),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 views: 2 passed, 2 failed; score 50.0% (incomplete: 01_immediate_mode 2/4)"),
+            std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(images / "out" / (kLab + "__vertex_order.diff.png")));
+}
+
+TEST(Labgrade, ProgressNamesEveryViewAsItFinishes) {
+  const gllab::ProcessResult r = grade({"--build", kBinDir.string(), "--labs", "01", "--jobs", "2"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  // stderr is not a terminal here: one line per finished view.
+  EXPECT_EQ(line_count(r.err), 4) << r.err;
+  for (int done = 1; done <= 4; ++done)
+    EXPECT_NE(r.err.find("[" + std::to_string(done) + "/4] pass " + kLab + "__"), std::string::npos) << r.err;
+  for (const std::string& v : kViews) EXPECT_NE(r.err.find(kLab + "__" + v + "\n"), std::string::npos) << r.err;
+}
+
+TEST(Labgrade, ReportHasEveryViewFailuresFirstAndAgreesWithJsonAndCsv) {
+  ScratchDir images("images"), report("report");
+  for (const std::string& v : kViews) fs::copy_file(kRefs / (kLab + "__" + v + ".png"), images / (kLab + "__" + v + ".png"));
+  fs::copy_file(kRefs / (kLab + "__default.png"), images / (kLab + "__wireframe.png"), fs::copy_options::overwrite_existing);
+  const gllab::ProcessResult r = grade({"--images", images.path().string(), "--labs", "01", "--report",
+                                        report.path().string(), "--quiet"});
+  ASSERT_EQ(r.exit_status, kSomeFailed) << r.err;
+
+  const nlohmann::json json = nlohmann::json::parse(file_text(report / "results.json"));
+  EXPECT_EQ(json["views"], 4);
+  EXPECT_EQ(json["passed"], 3);
+  ASSERT_EQ(json["results"].size(), 4u);
+  EXPECT_EQ(json["results"][0]["view"], "wireframe");  // the failure first
+  EXPECT_EQ(json["results"][0]["result"], "fail");
+  EXPECT_GT(json["results"][0]["metric"].get<double>(), json["results"][0]["limit"].get<double>());
+  for (int i = 1; i < 4; ++i) EXPECT_EQ(json["results"][i]["metric"], 0.0);
+
+  const std::string csv = file_text(report / "results.csv");
+  EXPECT_EQ(line_count(csv), 5) << csv;
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "lab,view,result,metric,limit,differing_share,unexcused_pixels,max_delta,reason");
+  EXPECT_NE(csv.find("\n" + kLab + ",wireframe,fail,"), std::string::npos) << csv;
+
+  const std::string html = file_text(report / "index.html");
+  EXPECT_LT(html.find(kLab + "__wireframe"), html.find(kLab + "__default")) << "failures come first";
+  for (const std::string& v : kViews)
+    for (const char* folder : {"reference", "submission", "heat_map"})
+      EXPECT_TRUE(fs::exists(report / folder / (kLab + "__" + v + ".png"))) << folder << " " << v;
+}
+
+// The report in a real browser: it loads, and every image on it resolves
+// (the page's own script counts loaded images into its title; Debian's
+// chromium, installed by ./lab).
+TEST(Labgrade, ReportLoadsInHeadlessChromiumWithEveryImage) {
+  ScratchDir report("report"), profile("chromium");
+  ASSERT_EQ(grade({"--build", kBinDir.string(), "--labs", "01", "--report", report.path().string(), "--quiet"}).exit_status, 0);
+  ASSERT_TRUE(fs::exists("/usr/bin/chromium")) << "chromium is missing: ./lab installs it";
+  const gllab::ProcessResult r = run_process(
+      {"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+       "--disable-background-networking", "--disable-component-update", "--disable-sync",
+       "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=10000", "--dump-dom",
+       "file://" + (report / "index.html").string()},
+      {}, 120);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  // 4 views x (reference, submission, heat map).
+  EXPECT_NE(r.out.find("<title>gllab grade: images 12/12 loaded</title>"), std::string::npos)
+      << r.out.substr(0, 400);
+}
+
+TEST(Labgrade, ClassCsvHasARowPerStudentAndAColumnPerLab) {
+  ScratchDir klass("class");
+  // anna: every image of lab 01; ben: one missing; carl: a build (a wrapper
+  // around this build's renderer).
+  fs::create_directories(klass / "anna");
+  fs::create_directories(klass / "ben");
+  fs::create_directories(klass / "carl");
+  for (const std::string& v : kViews) {
+    fs::copy_file(kRefs / (kLab + "__" + v + ".png"), klass / "anna" / (kLab + "__" + v + ".png"));
+    if (v != "wireframe") fs::copy_file(kRefs / (kLab + "__" + v + ".png"), klass / "ben" / (kLab + "__" + v + ".png"));
+  }
+  write_fake_renderer(klass / "carl" / (kLab + "_headless"), "exec " + (kBinDir / (kLab + "_headless")).string() + " \"$@\"");
+  const fs::path csv = klass / "grades.csv";
+  const gllab::ProcessResult r =
+      grade({"--class", klass.path().string(), "--labs", "01", "--csv", csv.string(), "--quiet", "--out", (klass / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  EXPECT_EQ(file_text(csv),
+            "student,kind,views,passed,score,01_immediate_mode\n"
+            "anna,images,4,4,100.0,100.0\n"
+            "ben,images,4,3,75.0,75.0\n"
+            "carl,build,4,4,100.0,100.0\n");
+}
+
+}  // namespace

@@ -1,0 +1,402 @@
+// tools/labgrade.cpp — grade lab renders against reference_images/ (instructors).
+//
+//   labgrade --build DIR    render every view with DIR's headless programs and grade them
+//   labgrade --images DIR   grade a folder of <lab>__<view>.png
+//   labgrade --class DIR    grade every submission (build or image folder) in DIR: one CSV
+//   options: --labs 13,18  --views a,b  --jobs N  --report DIR  --out DIR  --refs DIR
+//            --env NAME=VALUE  --timeout SECONDS  --csv FILE  --quiet
+//
+// Exit status: 0 every view passed, 1 some failed, 2 usage or input error.
+// The metric and its calibration: grading.h and README.md ("Grading").
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "grading.h"
+#include "image/compare.h"
+#include "image/image.h"
+
+namespace fs = std::filesystem;
+using namespace gllab::grading;
+using gllab::Tolerance;
+
+namespace {
+
+struct Settings {
+  enum class Mode { kNone, kBuild, kImages, kClass } mode = Mode::kNone;
+  fs::path input, refs = GLLAB_REFERENCE_DIR, report, out = "out", csv;
+  std::vector<std::string> labs, views, env;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  double timeout = kDefaultTimeoutSeconds;
+  bool quiet = false;
+};
+
+const char kUsage[] =
+    "usage: labgrade --build DIR | --images DIR | --class DIR [options]\n\n"
+    "Grades renders of the labs against reference_images/<lab>__<view>.png, every\n"
+    "view the references define, with the tolerance in reference_images/MANIFEST.\n\n"
+    "  --build DIR        a build of this repository: DIR/bin/<lab>_headless (or\n"
+    "                     DIR/<lab>_headless) renders each view\n"
+    "  --images DIR       a folder of PNGs named <lab>__<view>.png\n"
+    "  --class DIR        every folder in DIR is one student's build or image folder;\n"
+    "                     writes one CSV: a row per student, a column per lab\n"
+    "  --labs 13,18       only these labs (number or folder name)\n"
+    "  --views a,b        only these views\n"
+    "  --jobs N           renders at once (default: the number of cores)\n"
+    "  --report DIR       write DIR/index.html (reference, submission, heat map per\n"
+    "                     view, failures first), DIR/results.json, DIR/results.csv\n"
+    "  --out DIR          where failing renders and their heat maps go (default out/)\n"
+    "  --refs DIR         the references (default: this repository's reference_images/)\n"
+    "  --env NAME=VALUE   environment for the renderers, e.g. GALLIUM_DRIVER=softpipe\n"
+    "  --timeout SECONDS  a render running longer fails (default 60)\n"
+    "  --csv FILE         --class: the CSV to write (default class.csv)\n"
+    "  --quiet            no progress and no per-view table, only the summary\n\n"
+    "Exit status: 0 all views passed, 1 some failed, 2 usage or input error.\n";
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, sep);)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+Settings parse(int argc, char** argv) {
+  Settings s;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(a + " needs a value");
+      return argv[++i];
+    };
+    auto mode = [&](Settings::Mode m) {
+      if (s.mode != Settings::Mode::kNone) throw UsageError("give one of --build, --images, --class");
+      s.mode = m;
+      s.input = value();
+    };
+    if (a == "--build") mode(Settings::Mode::kBuild);
+    else if (a == "--images") mode(Settings::Mode::kImages);
+    else if (a == "--class") mode(Settings::Mode::kClass);
+    else if (a == "--labs") for (const std::string& l : split(value(), ',')) s.labs.push_back(l);
+    else if (a == "--views") for (const std::string& v : split(value(), ',')) s.views.push_back(v);
+    else if (a == "--report") s.report = value();
+    else if (a == "--out") s.out = value();
+    else if (a == "--refs") s.refs = value();
+    else if (a == "--csv") s.csv = value();
+    else if (a == "--quiet") s.quiet = true;
+    else if (a == "--env") {
+      const std::string e = value();
+      if (e.find('=') == std::string::npos || e.front() == '=')
+        throw UsageError("malformed --env '" + e + "' (expected NAME=VALUE)");
+      s.env.push_back(e);
+    } else if (a == "--jobs") {
+      const std::string v = value();
+      if (v.empty() || v.size() > 4 || v.find_first_not_of("0123456789") != std::string::npos || std::stoi(v) < 1)
+        throw UsageError("--jobs '" + v + "' is not a whole number from 1 to 9999");
+      s.jobs = std::stoi(v);
+    } else if (a == "--timeout") {
+      const std::string v = value();
+      char* end = nullptr;
+      s.timeout = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(s.timeout > 0) || !std::isfinite(s.timeout))
+        throw UsageError("--timeout '" + v + "' is not a number of seconds > 0");
+    } else if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    } else {
+      throw UsageError("unknown option '" + a + "' (try --help)");
+    }
+  }
+  if (s.mode == Settings::Mode::kNone) throw UsageError("nothing to grade: give --build DIR, --images DIR or --class DIR (try --help)");
+  if (s.mode != Settings::Mode::kClass && !s.csv.empty()) throw UsageError("--csv goes with --class");
+  if (s.csv.empty()) s.csv = "class.csv";
+  return s;
+}
+
+std::string percent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f%%", 100 * share);
+  return text;
+}
+
+// ---- progress and the table --------------------------------------------------------
+
+class Console {
+ public:
+  explicit Console(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO)) {}
+  void operator()(const ProgressEvent& e) {
+    if (quiet_) return;
+    if (tty_) {
+      // One line, rewritten: "[ 23/98] 13_bspline_curves__knot_insertion"
+      std::fprintf(stderr, "\r\033[K[%3d/%d] %s %s", e.done, e.total, e.finished ? "done" : "rendering",
+                   e.view->name().c_str());
+      if (e.done == e.total && e.finished) std::fputs("\r\033[K", stderr);
+    } else if (e.finished) {
+      std::fprintf(stderr, "[%d/%d] %s %s\n", e.done, e.total, e.finished->passed ? "pass" : "FAIL",
+                   e.view->name().c_str());
+    }
+    std::fflush(stderr);
+  }
+
+ private:
+  bool quiet_, tty_;
+};
+
+void print_table(const Grade& g, const Tolerance& t) {
+  std::size_t width = 4;
+  for (const ViewResult& v : g.views) width = std::max(width, v.id.name().size());
+  std::printf("%-*s  %-6s %10s %9s  %s\n", int(width), "view", "result", "differing", "max delta",
+              "metric: unexcused share / limit");
+  for (const ViewResult& v : g.views) {
+    if (v.comparison) {
+      const gllab::Comparison& c = *v.comparison;
+      std::printf("%-*s  %-6s %10s %9d  %s / %s\n", int(width), v.id.name().c_str(), v.passed ? "pass" : "FAIL",
+                  percent(c.differing_share()).c_str(), c.max_delta, percent(metric(c)).c_str(),
+                  percent(t.max_differing_share).c_str());
+    } else {
+      std::printf("%-*s  %-6s %10s %9s  %s\n", int(width), v.id.name().c_str(), "FAIL", "-", "-", "-");
+    }
+    if (!v.passed) std::printf("    %s\n", v.reason.c_str());
+  }
+}
+
+std::string lab_summary(const Grade& g) {
+  std::string text;
+  for (const auto& [lab, counts] : g.by_lab())
+    if (counts.first != counts.second)
+      text += (text.empty() ? "" : ", ") + lab + " " + std::to_string(counts.first) + "/" + std::to_string(counts.second);
+  return text.empty() ? "every lab complete" : "incomplete: " + text;
+}
+
+void print_summary(const Grade& g, const Tolerance& t) {
+  const int total = static_cast<int>(g.views.size()), passed = g.passed();
+  std::printf("%d views: %d passed, %d failed; score %.1f%% (%s)\n", total, passed, total - passed, g.score(),
+              lab_summary(g).c_str());
+  std::printf("metric: a pixel differs when a channel is off by more than %d, unless a %d-pixel shift explains it; "
+              "a view passes when at most %s of its pixels differ so\n",
+              t.channel_threshold, t.shift_radius, percent(t.max_differing_share).c_str());
+}
+
+// ---- files -------------------------------------------------------------------------
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw UsageError("cannot write " + file.string());
+  }
+  fs::rename(tmp, file);
+}
+
+// Failing renders and their heat maps, for the student to look at.
+void write_failures(const Grade& g, const Settings& s, const Tolerance& t) {
+  bool any = false;
+  for (const ViewResult& v : g.views) {
+    if (v.passed || !v.submission) continue;
+    if (!any) fs::create_directories(s.out), any = true;
+    const gllab::Image reference = gllab::read_png((s.refs / (v.id.name() + ".png")).string());
+    gllab::write_png((s.out / (v.id.name() + ".png")).string(), *v.submission, 1);
+    if (v.comparison)
+      gllab::write_png((s.out / (v.id.name() + ".diff.png")).string(),
+                       gllab::heat_map(reference, *v.submission, t.channel_threshold, t.shift_radius), 1);
+  }
+  if (any) std::printf("failing renders and heat maps (<view>.diff.png): %s/\n", s.out.c_str());
+}
+
+nlohmann::ordered_json view_json(const ViewResult& v, const Tolerance& t) {
+  nlohmann::ordered_json j;
+  j["lab"] = v.id.lab;
+  j["view"] = v.id.view;
+  j["result"] = v.passed ? "pass" : "fail";
+  j["reason"] = v.reason;
+  if (v.comparison) {
+    j["differing_pixels"] = v.comparison->differing_pixels;
+    j["differing_share"] = v.comparison->differing_share();
+    j["unexcused_pixels"] = v.comparison->mismatched_pixels;
+    j["metric"] = metric(*v.comparison);
+    j["max_delta"] = v.comparison->max_delta;
+  } else {
+    j["differing_pixels"] = j["differing_share"] = j["unexcused_pixels"] = j["metric"] = j["max_delta"] = nullptr;
+  }
+  j["limit"] = t.max_differing_share;
+  j["seconds"] = std::round(v.seconds * 1000) / 1000;
+  return j;
+}
+
+void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, const Tolerance& t) {
+  for (const char* sub : {"reference", "submission", "heat_map"}) fs::create_directories(dir / sub);
+  // Failures first, then by name.
+  std::vector<const ViewResult*> rows;
+  for (const ViewResult& v : g.views) rows.push_back(&v);
+  std::stable_sort(rows.begin(), rows.end(), [](const ViewResult* a, const ViewResult* b) { return !a->passed && b->passed; });
+
+  nlohmann::ordered_json json;
+  json["submission"] = g.submission;
+  json["views"] = g.views.size();
+  json["passed"] = g.passed();
+  json["score"] = g.score();
+  json["tolerance"] = {{"channel_threshold", t.channel_threshold}, {"shift_radius", t.shift_radius},
+                       {"max_unexcused_share", t.max_differing_share}};
+  json["results"] = nlohmann::ordered_json::array();
+  std::string csv = "lab,view,result,metric,limit,differing_share,unexcused_pixels,max_delta,reason\n";
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>gllab grade</title>\n"
+       << "<style>body{font-family:sans-serif;margin:1.5em;background:#fafafa}"
+       << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;vertical-align:top}"
+       << "tr.fail td.result{background:#f8d0d0;font-weight:bold}tr.pass td.result{background:#d6f0d6}"
+       << "img{width:192px;height:192px;image-rendering:pixelated;display:block}"
+       << ".none{width:192px;height:192px;display:flex;align-items:center;justify-content:center;background:#eee;color:#555}"
+       << "</style></head><body>\n<h1>gllab grade</h1>\n<p>Submission: <code>" << html_escape(g.submission)
+       << "</code>. " << g.views.size() << " views, " << g.passed() << " passed, "
+       << g.views.size() - g.passed() << " failed; score " << std::round(g.score() * 10) / 10 << "%.</p>\n"
+       << "<p>Metric: a pixel differs when a channel is off by more than " << t.channel_threshold
+       << ", unless a shift of " << t.shift_radius << " pixel explains it; a view passes when at most "
+       << percent(t.max_differing_share) << " of its pixels differ so. Heat map: grey = equal, blue = "
+       << "excused by the shift, yellow to red = differs.</p>\n<table>\n<tr><th>view</th><th>result</th>"
+       << "<th>metric / limit</th><th>reference</th><th>submission</th><th>heat map</th></tr>\n";
+  for (const ViewResult* v : rows) {
+    const std::string name = v->id.name() + ".png";
+    fs::copy_file(refs / name, dir / "reference" / name, fs::copy_options::overwrite_existing);
+    const bool has_render = v->submission.has_value();
+    if (has_render) gllab::write_png((dir / "submission" / name).string(), *v->submission, 1);
+    if (has_render && v->comparison)
+      gllab::write_png((dir / "heat_map" / name).string(),
+                       gllab::heat_map(gllab::read_png((refs / name).string()), *v->submission, t.channel_threshold,
+                                       t.shift_radius),
+                       1);
+    const auto cell = [&](bool present, const std::string& folder, const std::string& missing) {
+      return present ? "<td><a href=\"" + folder + "/" + name + "\"><img src=\"" + folder + "/" + name + "\" alt=\"" +
+                           folder + " " + v->id.name() + "\"></a></td>"
+                     : "<td><div class=\"none\">" + missing + "</div></td>";
+    };
+    html << "<tr class=\"" << (v->passed ? "pass" : "fail") << "\"><td><code>" << html_escape(v->id.name())
+         << "</code>" << (v->reason.empty() ? "" : "<br>" + html_escape(v->reason)) << "</td><td class=\"result\">"
+         << (v->passed ? "pass" : "FAIL") << "</td><td>"
+         << (v->comparison ? percent(metric(*v->comparison)) : std::string("-")) << " / "
+         << percent(t.max_differing_share) << "</td>" << cell(true, "reference", "") << cell(has_render, "submission", "no render")
+         << cell(has_render && v->comparison.has_value(), "heat_map", "not compared") << "</tr>\n";
+    json["results"].push_back(view_json(*v, t));
+    const nlohmann::ordered_json& j = json["results"].back();
+    const auto number = [](const nlohmann::ordered_json& x) { return x.is_null() ? std::string() : x.dump(); };
+    csv += csv_field(v->id.lab) + "," + csv_field(v->id.view) + "," + (v->passed ? "pass" : "fail") + "," +
+           number(j["metric"]) + "," + number(j["limit"]) + "," + number(j["differing_share"]) + "," +
+           number(j["unexcused_pixels"]) + "," + number(j["max_delta"]) + "," + csv_field(v->reason) + "\n";
+  }
+  // The page checks its own images once loaded (the test reads the title).
+  html << "</table>\n<script>window.addEventListener('load',function(){var i=document.images,ok=0;"
+          "for(var k=0;k<i.length;k++)if(i[k].complete&&i[k].naturalWidth>0)ok++;"
+          "document.title='gllab grade: images '+ok+'/'+i.length+' loaded';});</script>\n</body></html>\n";
+  write_text(dir / "index.html", html.str());
+  write_text(dir / "results.json", json.dump(2) + "\n");
+  write_text(dir / "results.csv", csv);
+  std::printf("report: %s (results.json, results.csv)\n", (dir / "index.html").c_str());
+}
+
+// ---- modes ---------------------------------------------------------------------------
+
+Grade grade_one(const Source& source, const std::vector<ViewId>& views, const Settings& s, const Tolerance& t,
+                bool keep_images) {
+  Console console(s.quiet);
+  return grade(source, views, s.refs, t, s.jobs, keep_images, [&](const ProgressEvent& e) { console(e); });
+}
+
+int run_single(const Settings& s, const std::vector<ViewId>& views, const Tolerance& t) {
+  const std::unique_ptr<Source> source =
+      s.mode == Settings::Mode::kBuild ? build_source(s.input, s.env, s.timeout) : image_source(s.input);
+  const Grade g = grade_one(*source, views, s, t, !s.report.empty());
+  if (!s.quiet) print_table(g, t);
+  print_summary(g, t);
+  write_failures(g, s, t);
+  if (!s.report.empty()) write_report(g, s.report, s.refs, t);
+  return g.passed() == static_cast<int>(g.views.size()) ? 0 : 1;
+}
+
+int run_class(const Settings& s, const std::vector<ViewId>& views, const Tolerance& t) {
+  if (!fs::is_directory(s.input)) throw UsageError("no class folder " + s.input.string());
+  std::vector<fs::path> students;
+  for (const auto& entry : fs::directory_iterator(s.input))
+    if (entry.is_directory()) students.push_back(entry.path());
+  std::sort(students.begin(), students.end());
+  if (students.empty()) throw UsageError("no submission folders in " + s.input.string());
+  std::vector<std::string> labs;
+  for (const ViewId& v : views)
+    if (labs.empty() || labs.back() != v.lab) labs.push_back(v.lab);
+  std::string csv = "student,kind,views,passed,score";
+  for (const std::string& lab : labs) csv += "," + lab;
+  csv += "\n";
+  bool all_passed = true;
+  for (const fs::path& student : students) {
+    const bool build = looks_like_build(student);
+    const std::unique_ptr<Source> source = build ? build_source(student, s.env, s.timeout) : image_source(student);
+    const Grade g = grade_one(*source, views, s, t, !s.report.empty());
+    all_passed = all_passed && g.passed() == static_cast<int>(g.views.size());
+    std::printf("%-24s %-6s %3d/%zu views  score %5.1f%%  (%s)\n", student.filename().c_str(), build ? "build" : "images",
+                g.passed(), g.views.size(), g.score(), lab_summary(g).c_str());
+    char score[16];
+    std::snprintf(score, sizeof score, "%.1f", g.score());
+    csv += csv_field(student.filename().string()) + "," + (build ? "build" : "images") + "," +
+           std::to_string(g.views.size()) + "," + std::to_string(g.passed()) + "," + score;
+    const auto by_lab = g.by_lab();
+    for (const std::string& lab : labs) {
+      const auto& [passed, total] = by_lab.at(lab);
+      std::snprintf(score, sizeof score, "%.1f", 100.0 * passed / total);
+      csv += std::string(",") + score;
+    }
+    csv += "\n";
+    if (!s.report.empty()) write_report(g, s.report / student.filename(), s.refs, t);
+  }
+  write_text(s.csv, csv);
+  std::printf("%zu submissions; one row each, one column per lab (percent of its views passed): %s\n",
+              students.size(), s.csv.c_str());
+  return all_passed ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Settings s = parse(argc, argv);
+    const Manifest manifest = read_manifest(s.refs);
+    const std::vector<ViewId> views = select_views(reference_views(s.refs), s.labs, s.views);
+    return s.mode == Settings::Mode::kClass ? run_class(s, views, manifest.tolerance)
+                                            : run_single(s, views, manifest.tolerance);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "labgrade: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "labgrade: %s\n", e.what());
+    return 2;
+  }
+}
