@@ -9,6 +9,7 @@
 #   make grade GRADE_ARGS="--images DIR"   labgrade with these arguments
 #   make test        build and run the whole test suite through CTest
 #   make references  re-render reference_images/ and reference_images/MANIFEST
+#   make calibration re-measure the grading metric, rewrite README's numbers
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
 #   make bench       build bench/ in build-bench/ (Release, GLLAB_BENCH=ON) and run
 #                    spline_bench against GLU, SISL and OpenCASCADE, then
@@ -22,7 +23,7 @@ SANITIZE_BUILD ?= build-sanitize
 BENCH_BUILD ?= build-bench
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build run grade test references sanitize bench clean
+.PHONY: all build run grade test references calibration sanitize bench clean
 
 all: build
 
@@ -43,6 +44,12 @@ test: build
 
 references: build
 	$(BUILD)/bin/labrun --update-references
+	@echo "look at every image before committing; then: make calibration"
+
+# Re-measure the grading metric (softpipe over every view, every real
+# mistake) and rewrite README.md's calibration block.
+calibration: build
+	GLLAB_UPDATE_CALIBRATION=1 ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -R grading/Calibration
 
 # LeakSanitizer: only OSMesa's known per-context leak is suppressed.
 sanitize:
