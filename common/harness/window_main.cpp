@@ -242,7 +242,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     window.state = gllab::make_state(window.lab, options);
-    window.state->interactive = true;
+    // A capture is a test of what headless draws: no live numbers in it.
+    window.state->interactive = options.out.empty() && options.capture_views.empty();
     window.start_time = options.time;
     window.capture = options.out;
     window.capture_views = options.capture_views;

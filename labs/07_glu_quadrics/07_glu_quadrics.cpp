@@ -337,7 +337,12 @@ void draw_glu_vs_glut(GLUquadric* q, const gllab::State& s) {
     colour(kGluInk);
     if (c < 2) sphere(q, 1.0, sl, st);
     colour(kGlutInk);
+    // Where both wires run along the same edge their depths tie, and which
+    // one wins would hang on the last bit of rounding. A hair nearer (depth
+    // range shrunk by 1e-5), glut's wire wins every tie in every renderer.
+    glDepthRange(0.0, 1.0 - 1e-5);
     if (c > 0) gllab::draw_glut_sphere(sl, st, false);
+    glDepthRange(0.0, 1.0);
     gluQuadricDrawStyle(q, GLU_FILL);
     glPopMatrix();
   }
