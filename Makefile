@@ -13,7 +13,8 @@
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
 #   make bench       build bench/ in build-bench/ (Release, GLLAB_BENCH=ON) and run
 #                    spline_bench against GLU, SISL and OpenCASCADE, then
-#                    submission_bench (lab 05's four paths, Mtri/s and ratios);
+#                    submission_bench (lab 05's four paths, Mtri/s and ratios),
+#                    then grade_bench (labgrade over every view: wall seconds);
 #                    flags for spline_bench go in BENCH_ARGS, e.g.
 #                    make bench BENCH_ARGS=--benchmark_filter=curve
 #   make clean       remove build/, build-sanitize/, build-bench/ and out/
@@ -63,9 +64,10 @@ sanitize:
 # A separate build directory: the normal build never needs the peers (bench/README.md).
 bench:
 	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DGLLAB_BENCH=ON
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench grade_bench
 	$(BENCH_BUILD)/bin/spline_bench $(BENCH_ARGS)
 	$(BENCH_BUILD)/bin/submission_bench $(SUBMISSION_BENCH_ARGS)
+	$(BENCH_BUILD)/bin/grade_bench $(GRADE_BENCH_ARGS)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(BENCH_BUILD) out
