@@ -167,8 +167,10 @@ class GluNurbs {
   /// culling, auto-load and, with auto-load off, gluLoadSamplingMatrices.
   /// Refuses (frame error, properties unchanged, returns false) an unknown
   /// enum, a tolerance or step that is not > 0 and finite, auto-load off for
-  /// a screen-space method or culling without sampling_matrices, and
-  /// sampling_matrices while auto-load is on (GLU would ignore them).
+  /// a screen-space method or culling without sampling_matrices,
+  /// sampling_matrices while auto-load is on (GLU would ignore them), and
+  /// culling or sampling_matrices with an object-space method (it uses no
+  /// matrices).
   bool set(const GluNurbsProperties& properties);
   /// The properties in effect (auto_load_matrix false for object-space methods).
   const GluNurbsProperties& properties() const;
@@ -177,6 +179,9 @@ class GluNurbs {
   /// Surfaces are lit only with glEnable(GL_AUTO_NORMAL) (DESIGN.md). `name`
   /// names the object in error lines. Returns the errors (also reported).
   /// Needs a current GL context (else one frame error, nothing drawn).
+  /// A 2D curve (dimension 2, z = 0) is fed as it is, (x, y, 0) or
+  /// (w x, w y, 0, w), and lies in the plane z = 0; a trim piece's curve
+  /// (x = u, y = v) draws the same way, in the (u, v) square.
   std::vector<GluError> draw_curve(const spline::BsplineCurve& curve, const std::string& name,
                                    RationalFeed feed = RationalFeed::kPremultiplied);
   std::vector<GluError> draw_surface(const spline::BsplineSurface& surface, const std::string& name,
