@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "gl/text.h"
 
@@ -20,5 +21,16 @@ void enable_headlight();
 /// under the current matrices, shifted by (dx, dy) pixels (dy downwards).
 void draw_label(double x, double y, double z, const std::string& text, Rgb colour,
                 int dx = 0, int dy = 0);
+
+/// The window pixel (x from the left, y down from the top, as draw_text
+/// takes them) of the lab point (x, y, z) under the current matrices, rounded
+/// to the nearest pixel. False when the point does not project.
+bool window_pixel(double x, double y, double z, int& px, int& py);
+
+/// draw_text_panel (one colour per line) with its top-left corner at the
+/// window position of the lab point (x, y, z) under the current matrices, so
+/// the panel stays beside what it describes when the window is resized.
+void draw_text_panel_at(double x, double y, double z, const std::vector<std::string>& lines,
+                        const std::vector<Rgb>& colours);
 
 }  // namespace gllab

@@ -7,6 +7,7 @@
 #include "gl/gl.h"
 #include "gl/pick.h"
 #include "gl/scene.h"
+#include "spline/curvature.h"
 
 namespace gllab {
 
@@ -15,7 +16,7 @@ namespace {
 // Unlit lines and points in one colour; the destructor restores the state.
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
-    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT);
+    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT | GL_COLOR_BUFFER_BIT);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
@@ -45,6 +46,25 @@ void draw_levels(const std::vector<std::vector<spline::Vec3>>& levels, const spl
   draw_dots({point}, last, 10.f);
 }
 
+// The current matrices, to place things a number of pixels from a point.
+struct Projection {
+  GLdouble model[16], projection[16];
+  GLint viewport[4];
+  Projection() {
+    glGetDoublev(GL_MODELVIEW_MATRIX, model);
+    glGetDoublev(GL_PROJECTION_MATRIX, projection);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+  }
+  bool to_window(const spline::Vec3& p, spline::Vec3& w) const {
+    return gluProject(p.x, p.y, p.z, model, projection, viewport, &w.x, &w.y, &w.z) == GL_TRUE;
+  }
+  spline::Vec3 to_lab(const spline::Vec3& w) const {
+    spline::Vec3 p;
+    gluUnProject(w.x, w.y, w.z, model, projection, viewport, &p.x, &p.y, &p.z);
+    return p;
+  }
+};
+
 }  // namespace
 
 // ---- points and polygons ----------------------------------------------------
@@ -73,7 +93,13 @@ void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size) 
 }
 
 void draw_control_points(const State& state, const std::string& list, Rgb colour, float size, bool numbered) {
-  const std::vector<spline::Vec3>& points = state.points(list);
+  draw_control_points_prefix(state, list, state.points(list).size(), colour, size, numbered);
+}
+
+void draw_control_points_prefix(const State& state, const std::string& list, std::size_t count, Rgb colour,
+                                float size, bool numbered) {
+  const std::vector<spline::Vec3>& all = state.points(list);
+  const std::vector<spline::Vec3> points(all.begin(), all.begin() + std::min(count, all.size()));
   int dimension = 2;
   for (const PointList& l : state.point_lists())
     if (l.name == list) dimension = l.dimension;
@@ -87,6 +113,21 @@ void draw_control_points(const State& state, const std::string& list, Rgb colour
 void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour) {
   draw_dashed_polyline(P, colour, 1.f);
   draw_dots(P, colour, 6.f);
+}
+
+void draw_convex_hull(const std::vector<spline::Vec3>& P, Rgb colour, float fill_alpha, float width) {
+  const std::vector<spline::Vec3> hull = spline::convex_hull_xy(P);
+  if (fill_alpha > 0) {
+    Ink ink(colour, width);
+    glEnable(GL_BLEND);
+    // Blend colour only and keep the destination alpha, as text panels do (text.cpp).
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glColor4f(colour.r, colour.g, colour.b, fill_alpha);
+    glBegin(GL_POLYGON);  // convex, so GL_POLYGON is defined
+    for (const spline::Vec3& p : hull) vertex(p);
+    glEnd();
+  }
+  draw_polyline(hull, colour, width, true);
 }
 
 void draw_control_net(const std::vector<spline::Vec3>& P, int rows, int columns, Rgb colour) {
@@ -103,6 +144,23 @@ void draw_control_net(const std::vector<spline::Vec3>& P, int rows, int columns,
   }
   glBegin(GL_POINTS);
   for (const spline::Vec3& p : P) vertex(p);
+  glEnd();
+}
+
+void draw_arrow(const spline::Vec3& from, const spline::Vec3& to, Rgb colour, float width, double head_px) {
+  draw_polyline({from, to}, colour, width);
+  // The head in window pixels: two barbs at +-25 degrees from the reversed direction.
+  const Projection m;
+  spline::Vec3 a, b;
+  if (!m.to_window(from, a) || !m.to_window(to, b)) return;
+  const double dx = a.x - b.x, dy = a.y - b.y, len = std::hypot(dx, dy);
+  if (!(len > 0)) return;
+  const double c = std::cos(0.44), s = std::sin(0.44), ux = dx / len * head_px, uy = dy / len * head_px;
+  Ink ink(colour, width);
+  glBegin(GL_TRIANGLES);
+  vertex(to);
+  vertex(m.to_lab({b.x + c * ux - s * uy, b.y + s * ux + c * uy, b.z}));
+  vertex(m.to_lab({b.x + c * ux + s * uy, b.y - s * ux + c * uy, b.z}));
   glEnd();
 }
 
@@ -177,6 +235,24 @@ void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb
   draw_levels(construction.levels, construction.point, first, last);
 }
 
+void draw_curvature_comb(const std::function<std::array<spline::Vec3, 3>(double)>& derivatives, double a, double b,
+                         double scale, Rgb colour, int teeth) {
+  std::vector<spline::Vec3> tips;
+  {
+    Ink ink(colour, 1.f);
+    glBegin(GL_LINES);
+    for (int k = 0; k <= teeth; ++k) {
+      const std::array<spline::Vec3, 3> d = derivatives(k == teeth ? b : a + (b - a) * k / teeth);
+      if (!(spline::norm(d[1]) > 0)) continue;
+      tips.push_back(d[0] - scale * spline::curvature_vector(d[1], d[2]));
+      vertex(d[0]);
+      vertex(tips.back());
+    }
+    glEnd();
+  }
+  draw_polyline(tips, colour, 1.f);
+}
+
 // ---- meshes -----------------------------------------------------------------------
 
 void draw_mesh(const spline::Mesh& mesh) {
@@ -215,6 +291,41 @@ void draw_normal_needles(const spline::Mesh& mesh, double length, Rgb colour, in
 
 spline::Vec3 PlotFrame::at(double x, double y) const {
   return {left + (x - x0) / (x1 - x0) * (right - left), bottom + (y - y0) / (y1 - y0) * (top - bottom), 0};
+}
+
+PlotFrame enter_plot(const PlotFrame& frame, bool equal_aspect) {
+  double kx = (frame.right - frame.left) / (frame.x1 - frame.x0);
+  double ky = (frame.top - frame.bottom) / (frame.y1 - frame.y0);
+  PlotFrame data = frame;
+  if (equal_aspect) {
+    kx = ky = std::min(std::fabs(kx), std::fabs(ky));
+    const double cx = (frame.x0 + frame.x1) / 2, cy = (frame.y0 + frame.y1) / 2;
+    const double hx = (frame.right - frame.left) / kx / 2, hy = (frame.top - frame.bottom) / ky / 2;
+    data.x0 = cx - hx, data.x1 = cx + hx, data.y0 = cy - hy, data.y1 = cy + hy;
+  }
+  glPushMatrix();
+  glTranslated(frame.left, frame.bottom, 0);
+  glScaled(kx, ky, 1);
+  glTranslated(-data.x0, -data.y0, 0);
+  data.left = data.x0, data.right = data.x1, data.bottom = data.y0, data.top = data.y1;
+  return data;
+}
+
+void scissor_to(const PlotFrame& frame) {
+  const Projection m;
+  spline::Vec3 a, b;
+  if (!m.to_window({frame.left, frame.bottom, 0}, a) || !m.to_window({frame.right, frame.top, 0}, b)) return;
+  const auto px = [](double v) { return static_cast<int>(std::lround(v)); };
+  const int x0 = px(std::min(a.x, b.x)), y0 = px(std::min(a.y, b.y));
+  const int x1 = px(std::max(a.x, b.x)), y1 = px(std::max(a.y, b.y));
+  glScissor(x0, y0, x1 - x0, y1 - y0);
+  glEnable(GL_SCISSOR_TEST);
+}
+
+Rgb series_colour(int i) {
+  static const Rgb kSeries[] = {{1.f, 0.45f, 0.35f}, {1.f, 0.8f, 0.3f},  {0.45f, 0.9f, 0.4f}, {0.4f, 0.7f, 1.f},
+                                {0.8f, 0.5f, 1.f},   {0.3f, 0.9f, 0.9f}, {1.f, 0.5f, 0.8f},  {0.8f, 0.8f, 0.8f}};
+  return kSeries[((i % 8) + 8) % 8];
 }
 
 void draw_plot_axes(const PlotFrame& frame, Rgb colour, const std::string& title) {

@@ -9,6 +9,7 @@
 // which it does not touch.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,14 +44,28 @@ void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size =
 /// one way a lab draws points a student can drag.
 void draw_control_points(const State& state, const std::string& list, Rgb colour, float size = 9.f,
                          bool numbered = false);
+/// The same for the first `count` points of the list only; the others are
+/// neither drawn nor draggable (a list whose points join one at a time).
+void draw_control_points_prefix(const State& state, const std::string& list, std::size_t count, Rgb colour,
+                                float size = 9.f, bool numbered = false);
 
 /// A control polygon: a thin dashed line through P and a dot at each point
 /// (not draggable; draw_control_points makes them draggable).
 void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour);
 
+/// The convex hull of the points (spline::convex_hull_xy, in the xy plane) as
+/// an outline, filled translucent when fill_alpha > 0: where a Bézier curve
+/// (or a B-spline span, with the points that act on it) must lie.
+void draw_convex_hull(const std::vector<spline::Vec3>& P, Rgb colour, float fill_alpha = 0.f, float width = 1.f);
+
 /// A surface's control net: its rows and columns (P[i * columns + j]) as
 /// thin lines, a dot at each point.
 void draw_control_net(const std::vector<spline::Vec3>& P, int rows, int columns, Rgb colour);
+
+/// A line from `from` to `to` with an arrow head of `head_px` pixels at `to`
+/// (sized on screen under the current matrices, like draw_knot_markers):
+/// tangent vectors, derivatives, handles.
+void draw_arrow(const spline::Vec3& from, const spline::Vec3& to, Rgb colour, float width = 2.f, double head_px = 9);
 
 // ---- curves -------------------------------------------------------------------
 
@@ -76,6 +91,16 @@ void draw_de_casteljau(const spline::DeCasteljau& scheme, Rgb first, Rgb last);
 /// points that act at u, levels[p][0] = C(u).
 void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb last);
 
+/// A curvature comb (curvature from the curve's own derivatives,
+/// spline/curvature.h): at `teeth` + 1 evenly spaced u in [a, b] a thin tooth
+/// from X(u) to X(u) - scale k N (spline::curvature_vector: away from the
+/// centre of curvature, as CAD programs draw it), and the line through the
+/// tips. `derivatives(u)` returns {X(u), X'(u), X''(u)}. Teeth spaced evenly
+/// in u also show the parameter speed. A sample where X' = 0 has no
+/// curvature and gets no tooth.
+void draw_curvature_comb(const std::function<std::array<spline::Vec3, 3>(double)>& derivatives, double a, double b,
+                         double scale, Rgb colour, int teeth = 120);
+
 // ---- meshes -----------------------------------------------------------------------
 
 /// The triangles with their per-vertex normals (lit as the caller set up).
@@ -99,6 +124,22 @@ struct PlotFrame {
 
 /// The frame's box, the line y = 0 when it is in range, and `title` above it.
 void draw_plot_axes(const PlotFrame& frame, Rgb colour, const std::string& title = "");
+/// Pushes (glPushMatrix) a model-view transform under which data (x, y) lands
+/// where frame.at(x, y) does, so a State point list can live in data units
+/// inside a plot and still be dragged (draw_control_points under it).
+/// equal_aspect: one scale for both axes (a circle stays round); the data
+/// range is then widened about its centre until it fills the frame. Returns
+/// the frame as seen under the transform (left = x0, ..., top = y1, with the
+/// widened range) for draw_plot_axes and draw_plot_function. Pop with glPopMatrix.
+PlotFrame enter_plot(const PlotFrame& frame, bool equal_aspect = false);
+/// Turns on the scissor test for the window rectangle that the lab box
+/// [left, right] x [bottom, top] of `frame` covers under the current matrices:
+/// nothing drawn afterwards leaves that cell (curvature combs that spike,
+/// curves that run off). glDisable(GL_SCISSOR_TEST) ends it.
+void scissor_to(const PlotFrame& frame);
+/// Distinct colours for the i-th of several things (basis functions and their
+/// control points, curves compared in one view); repeats after 8.
+Rgb series_colour(int i);
 /// y = f(x) sampled at `samples` + 1 evenly spaced x from x0 to x1, clipped to the box.
 void draw_plot_function(const PlotFrame& frame, const std::function<double(double)>& f, Rgb colour,
                         float width = 2.f, int samples = 240);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdarg>
+#include <cstdio>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -182,6 +184,10 @@ void draw_text(int x, int y, const std::string& utf8, Rgb colour) {
 }
 
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb colour) {
+  draw_text_panel(x, y, lines, std::vector<Rgb>{colour});
+}
+
+void draw_text_panel(int x, int y, const std::vector<std::string>& lines, const std::vector<Rgb>& colours) {
   PixelSpace px;
   constexpr int kPad = 6;
   int w = 0;
@@ -197,7 +203,20 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb co
   glRecti(x, top - h - 2 * kPad, x + w + 2 * kPad, top);
   glDisable(GL_BLEND);
   for (std::size_t i = 0; i < lines.size(); ++i)
-    bitmap_text(x + kPad, y + kPad + kGlyphHeight * static_cast<int>(i), px.height, lines[i], colour);
+    bitmap_text(x + kPad, y + kPad + kGlyphHeight * static_cast<int>(i), px.height, lines[i],
+                colours.empty() ? Rgb{1.f, 1.f, 1.f} : colours[std::min(i, colours.size() - 1)]);
+}
+
+std::string format_text(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string text(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(text.data(), text.size() + 1, format, again);
+  va_end(again);
+  return text;
 }
 
 }  // namespace gllab

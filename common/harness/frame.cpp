@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 #include "gl/check.h"
 #include "gl/gl.h"
@@ -19,11 +20,24 @@ void draw_frame(const Lab& lab, const State& state) {
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
 
-  lab.display(state);
-
+  // The depths to return to, whatever display() left pushed.
+  GLint modelview_depth = 0, projection_depth = 0, attrib_depth = 0;
+  glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, &modelview_depth);
+  glGetIntegerv(GL_PROJECTION_STACK_DEPTH, &projection_depth);
+  glGetIntegerv(GL_ATTRIB_STACK_DEPTH, &attrib_depth);
+  try {
+    lab.display(state);
+  } catch (const std::exception& e) {
+    // The spline core throws on bad input (two interpolation nodes dragged
+    // onto one x): a frame error like a GL error, never a crash.
+    report_frame_error(e.what());
+  }
+  for (GLint d = 0; glGetIntegerv(GL_ATTRIB_STACK_DEPTH, &d), d > attrib_depth;) glPopAttrib();
   glMatrixMode(GL_PROJECTION);
+  for (GLint d = 0; glGetIntegerv(GL_PROJECTION_STACK_DEPTH, &d), d > projection_depth;) glPopMatrix();
   glPopMatrix();
   glMatrixMode(GL_MODELVIEW);
+  for (GLint d = 0; glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, &d), d > modelview_depth;) glPopMatrix();
   glPopMatrix();
   glPopClientAttrib();
   glPopAttrib();

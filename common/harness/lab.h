@@ -135,6 +135,9 @@ struct Lab {
   std::vector<Param> params;
   std::vector<Key> keys;
   std::function<void()> init;
+  /// An exception out of display() (the spline core rejecting dragged data,
+  /// say) is a frame error like a GL error: shown in the window, exit 1
+  /// headless; the matrices and attributes it left pushed are popped.
   std::function<void(const State&)> display;
   /// Keys that do more than turn one parameter. Returns true when the key
   /// was the lab's. May be empty when every key names its parameter.

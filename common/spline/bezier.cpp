@@ -236,6 +236,30 @@ BezierCurve bezier_from_monomial(const std::vector<Vec3>& c, double a, double b)
 
 // ---- subdivision and degree elevation ------------------------------------------
 
+std::vector<Vec3> convex_hull_xy(const std::vector<Vec3>& P) {
+  if (P.empty()) fail("convex_hull_xy: no points (P is empty)");
+  for (std::size_t i = 0; i < P.size(); ++i) require_finite(P[i], "convex_hull_xy", at("P", i));
+  std::vector<Vec3> q = P;
+  std::sort(q.begin(), q.end(), [](Vec3 u, Vec3 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); });
+  q.erase(std::unique(q.begin(), q.end(), [](Vec3 u, Vec3 v) { return u.x == v.x && u.y == v.y; }), q.end());
+  if (q.size() < 3) return q;
+  // > 0 when o -> a -> b turns left (counter-clockwise).
+  const auto turn = [](Vec3 o, Vec3 a, Vec3 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<Vec3> hull;
+  // Lower chain left to right, then upper chain right to left; each pops the
+  // corners that would make a right turn or a straight line.
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = hull.size();
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      const Vec3 p = pass == 0 ? q[k] : q[q.size() - 1 - k];
+      while (hull.size() >= start + 2 && turn(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();  // the chain's last point starts the other chain
+  }
+  return hull;
+}
+
 BezierSplit subdivide(const BezierCurve& curve, double t) {
   const std::string what = "subdivide";
   const DeCasteljau scheme = de_casteljau_as(curve, t, what);

@@ -87,6 +87,20 @@ std::vector<Vec3> monomial_coefficients(const BezierCurve& curve);
 /// (degree n = c.size() - 1). In s: b_i = sum_{j <= i} C(i, j) / C(n, j) c_j(s).
 BezierCurve bezier_from_monomial(const std::vector<Vec3>& c, double a = 0, double b = 1);
 
+// ---- convex hull (seed 000 §1.6 property 1) -------------------------------
+
+/// The convex hull of the points' projection into the xy plane, as its
+/// corners in counter-clockwise order starting at the lowest-leftmost point;
+/// points on a hull edge are not corners. Andrew's monotone chain (A. M.
+/// Andrew, "Another efficient algorithm for convex hulls in two dimensions",
+/// Inf. Proc. Letters 9, 1979): sort by x then y, build the lower and the upper
+/// chain, keep only left turns. O(n log n). Every X(t), t in [a, b], of a
+/// Bézier curve lies in the hull of its control points (property 1: X(t) is a
+/// convex combination with weights B_i^n >= 0 that sum to 1). One distinct
+/// point gives one corner, collinear points the two ends. Throws if P is empty
+/// or a point is not finite. z is kept from the input points.
+std::vector<Vec3> convex_hull_xy(const std::vector<Vec3>& P);
+
 // ---- subdivision and degree elevation ---------------------------------------
 
 /// The two halves of a curve split at a parameter.

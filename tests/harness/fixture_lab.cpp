@@ -7,9 +7,12 @@
 //   mistake=1  wrong colour: one shape's glColor has red and blue swapped
 //   mistake=2  missing primitive: one triangle of the fan is not drawn
 //   mistake=3  moved vertex: one vertex off by 1% of the 512-pixel frame
-// and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose.
+// and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose;
+// `throws=1` makes it throw std::invalid_argument half-way, with a matrix and
+// an attribute group still pushed (as the spline core does on bad input).
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 
 #include "gl/gl.h"
 #include "gl/scene.h"
@@ -66,6 +69,11 @@ void display(const gllab::State& s) {
   gllab::draw_label(0, -2.6, 0, "GL_QUAD_STRIP and GL_TRIANGLES", {1.f, 1.f, 1.f});
 
   if (s.flag("gl_error")) glEnable(GL_TRUE);  // GL_TRUE is no capability: GL_INVALID_ENUM
+  if (s.flag("throws")) {
+    glPushMatrix();
+    glPushAttrib(GL_CURRENT_BIT);
+    throw std::invalid_argument("fixture: thrown in display() on purpose");
+  }
 }
 
 }  // namespace
@@ -75,7 +83,8 @@ gllab::Lab gllab::define_lab() {
           "test fixture · mistakes students make",
           {{"default", "lit polygons, lines, points and text"}},
           {{"mistake", 0, 0, 3, "0 none, 1 wrong colour, 2 missing triangle, 3 moved vertex"},
-           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"}},
+           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"},
+           {"throws", 0, 0, 1, "throw std::invalid_argument in display()"}},
           {},
           [] { glEnable(GL_DEPTH_TEST); },
           display,

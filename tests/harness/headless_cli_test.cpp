@@ -97,6 +97,22 @@ TEST(HeadlessCli, GlErrorInDisplayExitsNonZeroAndNamesTheError) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// A lab's display() that throws (the spline core on bad input, e.g. two
+// interpolation nodes dragged onto one another) is a frame error like a GL
+// error: one line naming the view and the message, exit 1, no image. The
+// matrices and attributes it left pushed are popped (no GL stack error).
+TEST(HeadlessCli, ExceptionInDisplayIsAFrameErrorNamingTheView) {
+  ScratchDir dir("throws");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r =
+      run_process({gllab::testing::kFixtureLab.string(), "--set", "throws=1", "--out", out.string()});
+  EXPECT_EQ(r.exit_status, kFailureStatus);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("view 'default': fixture: thrown in display() on purpose"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("GL_STACK"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(WindowCli, WithoutADisplayNamesTheHeadlessCommandAndExits2) {
   const gllab::ProcessResult r = run_process(
       {(gllab::testing::kBinDir / kLab).string(), "--view", "wireframe"}, {"DISPLAY="});

@@ -782,6 +782,59 @@ TEST(BezierInterpolate, ReproducesItsPointsAndEqualsTheLagrangeCurve) {
 
 // ---- edges ------------------------------------------------------------------------------------
 
+// ---- convex hull (seed 000 §1.6 property 1) ----------------------------------------
+
+TEST(ConvexHullXy, SquareDropsInteriorAndEdgePointsCounterClockwise) {
+  // Corners of the unit square given out of order, with its centre and the
+  // midpoint of an edge: only the corners remain, counter-clockwise from the
+  // lowest-leftmost one (Andrew 1979 keeps strict left turns only).
+  const std::vector<Vec3> hull =
+      convex_hull_xy({{1, 1, 0}, {0.5, 0.5, 0}, {0, 0, 0}, {0.5, 0, 0}, {0, 1, 0}, {1, 0, 0}});
+  const std::vector<Vec3> want = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  ASSERT_EQ(hull.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_EQ(hull[i], want[i]) << i;
+}
+
+TEST(ConvexHullXy, SeedPolygonIsItsOwnHull) {
+  // The seed's control polygon (0,0), (2,4.5), (8.5,6.5), (11,2) is convex:
+  // all four points are corners, in the order (0,0), (11,2), (8.5,6.5), (2,4.5).
+  const std::vector<Vec3> hull = convex_hull_xy(seed_cubic().P);
+  const std::vector<Vec3> want = {{0, 0, 0}, {11, 2, 0}, {8.5, 6.5, 0}, {2, 4.5, 0}};
+  ASSERT_EQ(hull.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_EQ(hull[i], want[i]) << i;
+}
+
+TEST(ConvexHullXy, DegenerateInputs) {
+  // Collinear points: the two ends. Repeated points: one corner.
+  const std::vector<Vec3> line = convex_hull_xy({{2, 2, 0}, {0, 0, 0}, {1, 1, 0}, {3, 3, 0}});
+  ASSERT_EQ(line.size(), 2u);
+  EXPECT_EQ(line[0], (Vec3{0, 0, 0}));
+  EXPECT_EQ(line[1], (Vec3{3, 3, 0}));
+  EXPECT_EQ(convex_hull_xy({{1, 2, 0}, {1, 2, 0}}).size(), 1u);
+  expect_contains(error_of([] { convex_hull_xy({}); }), "convex_hull_xy: no points");
+  expect_contains(error_of([] { convex_hull_xy({{0, 0, 0}, {NAN, 1, 0}}); }), "P[1]=(nan, 1, 0) is not finite");
+}
+
+TEST(ConvexHullXy, EveryCurvePointLiesInTheHullOfItsControlPoints) {
+  // Property 1 of seed 000 §1.6 across random planar curves: no sample is to
+  // the right of a counter-clockwise hull edge (beyond round-off).
+  std::mt19937 rng(7);
+  for (int c = 0; c < kRandomCases; ++c) {
+    BezierCurve curve = random_curve(rng, c);
+    for (Vec3& p : curve.P) p.z = 0;
+    const std::vector<Vec3> hull = convex_hull_xy(curve.P);
+    if (hull.size() < 3) continue;
+    const double tol = kExact * scale_of(curve.P) * scale_of(curve.P);
+    for (int k = 0; k < kSamples; ++k) {
+      const Vec3 x = bezier_point(curve, sample(curve.a, curve.b, k));
+      for (std::size_t e = 0; e < hull.size(); ++e) {
+        const Vec3 a = hull[e], b = hull[(e + 1) % hull.size()];
+        EXPECT_GE((b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x), -tol) << "case " << c << " k " << k;
+      }
+    }
+  }
+}
+
 TEST(BezierEdge, DegreeZeroIsOnePoint) {
   BezierCurve c;
   c.P = {{1, 2, 3}};
