@@ -13,9 +13,12 @@ namespace gllab {
 namespace {
 
 // Unlit lines and points in one colour; the destructor restores the state.
+// GL_LIGHTING_BIT too: with GL_COLOR_MATERIAL on, glColor also sets the
+// material, and restoring only the current colour would leave the material
+// of the last line behind (Mesa then skips a glColor of the same value).
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
-    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT);
+    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_LINE_BIT | GL_POINT_BIT);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
@@ -82,6 +85,28 @@ void draw_control_points(const State& state, const std::string& list, Rgb colour
     register_pickable(list, i, points[i], dimension);
     if (numbered) draw_label(points[i].x, points[i].y, points[i].z, std::to_string(i), colour, 12, -12);
   }
+}
+
+void draw_control_points(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                         Rgb colour, float size, bool numbered) {
+  const std::vector<spline::Vec3>& points = state.points(list);
+  std::vector<spline::Vec3> at;
+  for (std::size_t i : indices) at.push_back(points.at(i));
+  draw_control_points_at(state, list, indices, at, colour, size);
+  if (numbered)
+    for (std::size_t k = 0; k < indices.size(); ++k)
+      draw_label(at[k].x, at[k].y, at[k].z, std::to_string(indices[k]), colour, 12, -12);
+}
+
+void draw_control_points_at(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size) {
+  const std::size_t count = state.points(list).size();  // throws for an unknown list
+  int dimension = 2;
+  for (const PointList& l : state.point_lists())
+    if (l.name == list) dimension = l.dimension;
+  draw_dots(at, colour, size);
+  for (std::size_t k = 0; k < indices.size() && k < at.size(); ++k)
+    if (indices[k] < count) register_pickable(list, indices[k], at[k], dimension);
 }
 
 void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour) {
@@ -187,6 +212,31 @@ void draw_mesh(const spline::Mesh& mesh) {
       glNormal3d(n.x, n.y, n.z);
       vertex(mesh.positions[k]);
     }
+  glEnd();
+}
+
+void draw_mesh_coloured(const spline::Mesh& mesh, const std::vector<Rgb>& colours) {
+  glPushAttrib(GL_CURRENT_BIT);  // the per-vertex colours do not leak out
+  glBegin(GL_TRIANGLES);
+  for (const auto& t : mesh.triangles)
+    for (int k : t) {
+      const Rgb& c = colours[static_cast<std::size_t>(k)];
+      const spline::Vec3& n = mesh.normals[k];
+      glColor3f(c.r, c.g, c.b);
+      glNormal3d(n.x, n.y, n.z);
+      vertex(mesh.positions[k]);
+    }
+  glEnd();
+  glPopAttrib();
+}
+
+void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb colour, float width) {
+  Ink ink(colour, width);
+  glBegin(GL_LINES);
+  for (const auto& s : segments) {
+    vertex(s[0]);
+    vertex(s[1]);
+  }
   glEnd();
 }
 

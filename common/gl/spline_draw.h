@@ -9,6 +9,8 @@
 // which it does not touch.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,6 +45,20 @@ void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size =
 /// one way a lab draws points a student can drag.
 void draw_control_points(const State& state, const std::string& list, Rgb colour, float size = 9.f,
                          bool numbered = false);
+
+/// Only the points of `list` at `indices`, drawn and made pickable as above.
+/// A lab leaves out the points it constructs from the others (a C1 neighbour,
+/// the inner Bézier points of an interpolating spline): the mouse cannot grab
+/// them, and the lab draws them itself where the construction puts them.
+void draw_control_points(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                         Rgb colour, float size = 9.f, bool numbered = false);
+
+/// Points of `list` drawn where the lab shows them: at[k] for list point
+/// indices[k], pickable as that point (the mouse starts from at[k]). For lists
+/// whose points the lab only partly uses: a height field keeps each control
+/// point above its grid position and reads only its z.
+void draw_control_points_at(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size = 9.f);
 
 /// A control polygon: a thin dashed line through P and a dot at each point
 /// (not draggable; draw_control_points makes them draggable).
@@ -80,6 +96,11 @@ void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb
 
 /// The triangles with their per-vertex normals (lit as the caller set up).
 void draw_mesh(const spline::Mesh& mesh);
+/// The same with one colour per vertex (colours[k] for positions[k], e.g. by
+/// height); with GL_COLOR_MATERIAL on (enable_headlight) they are lit.
+void draw_mesh_coloured(const spline::Mesh& mesh, const std::vector<Rgb>& colours);
+/// Line segments (GL_LINES), e.g. contour_segments' iso-lines.
+void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb colour, float width = 1.f);
 /// Every triangle edge as a line.
 void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width = 1.f);
 /// A needle of `length` along the normal at every `every`-th vertex.
