@@ -16,9 +16,15 @@ namespace {
 // GL_LIGHTING_BIT too: with GL_COLOR_MATERIAL on, glColor also sets the
 // material, and restoring only the current colour would leave the material
 // of the last line behind (Mesa then skips a glColor of the same value).
+// Lines test depth but do not write it: where two lines cross or run on top
+// of each other, the one drawn later wins on every rasteriser. (Written
+// depths tie there, and llvmpipe and softpipe break the ties differently.)
+// So draw surfaces first, then what goes on them.
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
-    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_LINE_BIT | GL_POINT_BIT);
+    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_LINE_BIT | GL_POINT_BIT |
+                 GL_DEPTH_BUFFER_BIT);
+    glDepthMask(GL_FALSE);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
@@ -66,6 +72,11 @@ void draw_dashed_polyline(const std::vector<spline::Vec3>& points, Rgb colour, f
   glBegin(GL_LINE_STRIP);
   for (const spline::Vec3& p : points) vertex(p);
   glEnd();
+}
+
+void draw_arrow(const spline::Vec3& from, const spline::Vec3& vector, Rgb colour, float width) {
+  draw_polyline({from, from + vector}, colour, width);
+  draw_dots({from + vector}, colour, 2 * width + 1);
 }
 
 void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size) {
@@ -215,8 +226,20 @@ void draw_mesh(const spline::Mesh& mesh) {
   glEnd();
 }
 
-void draw_mesh_coloured(const spline::Mesh& mesh, const std::vector<Rgb>& colours) {
-  glPushAttrib(GL_CURRENT_BIT);  // the per-vertex colours do not leak out
+// glPolygonOffset(factor, units) for draw_surface: lines drawn on a surface
+// must win the depth test on llvmpipe and softpipe alike (a smaller offset let
+// softpipe hide line pixels that llvmpipe showed).
+constexpr GLfloat kSurfaceOffsetFactor = 1.f, kSurfaceOffsetUnits = 1.f;
+
+void draw_surface(const spline::Mesh& mesh, Rgb colour) {
+  draw_surface(mesh, std::vector<Rgb>(mesh.positions.size(), colour));
+}
+
+void draw_surface(const spline::Mesh& mesh, const std::vector<Rgb>& colours) {
+  // GL_LIGHTING_BIT too: the colours set the material (see Ink).
+  glPushAttrib(GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_POLYGON_BIT);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(kSurfaceOffsetFactor, kSurfaceOffsetUnits);
   glBegin(GL_TRIANGLES);
   for (const auto& t : mesh.triangles)
     for (int k : t) {

@@ -4,9 +4,11 @@
 // to GL, in immediate mode, so a student can read every call. None of them
 // re-implements spline math: curves are flattened by spline::flatten_curve,
 // constructions come from spline::de_casteljau and spline::de_boor.
-// Lines and points are drawn unlit with the colour given; every function
-// restores the GL state it changes (glPushAttrib), except the matrices,
-// which it does not touch.
+// Lines and points are drawn unlit with the colour given; they test depth
+// but do not write it (where lines meet, the one drawn last wins, on every
+// rasteriser), so draw surfaces first and what goes on them after. Every
+// function restores the GL state it changes (glPushAttrib), except the
+// matrices, which it does not touch.
 #pragma once
 
 #include <array>
@@ -36,6 +38,10 @@ void draw_polyline(const std::vector<spline::Vec3>& points, Rgb colour, float wi
 
 /// The same, dashed (glLineStipple): construction lines, control polygons.
 void draw_dashed_polyline(const std::vector<spline::Vec3>& points, Rgb colour, float width = 1.f);
+
+/// An arrow for a vector at a point: a line from `from` to `from + vector`
+/// and a dot at its tip (partial derivatives, twist vectors, tangents).
+void draw_arrow(const spline::Vec3& from, const spline::Vec3& vector, Rgb colour, float width = 2.f);
 
 /// Square dots of `size` pixels.
 void draw_dots(const std::vector<spline::Vec3>& points, Rgb colour, float size = 6.f);
@@ -96,9 +102,13 @@ void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb
 
 /// The triangles with their per-vertex normals (lit as the caller set up).
 void draw_mesh(const spline::Mesh& mesh);
+/// A surface in one colour, pushed back in depth (glPolygonOffset, see
+/// kSurfaceOffset) so that curves, nets and iso-lines drawn on it afterwards
+/// stay visible.
+void draw_surface(const spline::Mesh& mesh, Rgb colour);
 /// The same with one colour per vertex (colours[k] for positions[k], e.g. by
 /// height); with GL_COLOR_MATERIAL on (enable_headlight) they are lit.
-void draw_mesh_coloured(const spline::Mesh& mesh, const std::vector<Rgb>& colours);
+void draw_surface(const spline::Mesh& mesh, const std::vector<Rgb>& colours);
 /// Line segments (GL_LINES), e.g. contour_segments' iso-lines.
 void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb colour, float width = 1.f);
 /// Every triangle edge as a line.

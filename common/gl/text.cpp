@@ -4,6 +4,8 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstdarg>
+#include <cstdio>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -179,6 +181,18 @@ int text_width(const std::string& utf8) {
 void draw_text(int x, int y, const std::string& utf8, Rgb colour) {
   PixelSpace px;
   bitmap_text(x, y, px.height, utf8, colour);
+}
+
+std::string format_text(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
 }
 
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb colour) {

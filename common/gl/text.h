@@ -27,6 +27,9 @@ void draw_text(int x, int y, const std::string& utf8, Rgb colour);
 /// A dark, translucent box with lines of text, top-left at (x, y) from the top.
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb colour);
 
+/// printf into a std::string, for labels and panels: format_text("k = %.2f", k).
+std::string format_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
 /// Width in pixels of the text drawn by draw_text (one glyph per code point).
 int text_width(const std::string& utf8);
 
