@@ -2,6 +2,7 @@
 #include "harness/frame.h"
 
 #include <algorithm>
+#include <exception>
 #include <sstream>
 
 #include "gl/check.h"
@@ -19,7 +20,14 @@ void draw_frame(const Lab& lab, const State& state) {
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
 
-  lab.display(state);
+  // A display() that throws (the spline core rejecting what the mouse made,
+  // e.g. two joints dragged onto one place) reports the message like a GL
+  // error: on screen in the window, one line and exit 1 headless. Never a crash.
+  try {
+    lab.display(state);
+  } catch (const std::exception& e) {
+    report_frame_error(e.what());
+  }
 
   glMatrixMode(GL_PROJECTION);
   glPopMatrix();

@@ -46,7 +46,6 @@ const gllab::spline::Parameterization kNodes[] = {gllab::spline::Parameterizatio
                                                    gllab::spline::Parameterization::kCentripetal};
 const gllab::Rgb kSegmentInk[2] = {{1.f, .6f, .2f}, {.3f, .75f, 1.f}}, kFree{1.f, .9f, .3f},
     kMade{.85f, .5f, .85f}, kDeBoor{.35f, .9f, .45f}, kLine{.55f, .55f, .6f}, kText{1.f, 1.f, 1.f};
-const char* const kConditions[] = {"C0", "G1", "C1", "C2"};
 
 // The spline -----------------------------------------------------------------
 // Nodes t_0..t_4 from the joints (seed 000 §1.6, parameterizations).

@@ -79,4 +79,27 @@ TEST(BezierSplinesLab, G1WithKOneIsC1ForUniformNodes) {
             0);
 }
 
+// Chordal nodes need distinct joints (parameterization.h). Dragging b3 onto
+// b6 must give the core's message, one line and exit 1 (as a GL error does),
+// in the headless program and in the window (which used to abort with
+// std::terminate, status 134, when display() threw).
+TEST(BezierSplinesLab, CoincidentJointsAreAnErrorNotACrash) {
+  ScratchDir dir("lab12");
+  const std::vector<std::string> args = {"--view", "joining_c1", "--set", "nodes=1", "--set", "B[3]=0,-0.2"};
+  std::vector<std::string> headless = {gllab::testing::headless(kLab), "--out", (dir / "x.png").string()};
+  headless.insert(headless.end(), args.begin(), args.end());
+  const gllab::ProcessResult h = gllab::run_process(headless);
+  EXPECT_EQ(h.exit_status, 1) << h.err;
+  EXPECT_EQ(gllab::testing::line_count(h.err), 1) << h.err;
+  EXPECT_NE(h.err.find("view 'joining_c1': parameters (chordal): P[1]=(0, -0.2, 0) and P[2]=(0, -0.2, 0) coincide"),
+            std::string::npos)
+      << h.err;
+  std::vector<std::string> window = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24",
+                                     (gllab::testing::kBinDir / kLab).string(), "--capture", (dir / "w.png").string()};
+  window.insert(window.end(), args.begin(), args.end());
+  const gllab::ProcessResult w = gllab::run_process(window, {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks
+  EXPECT_EQ(w.exit_status, 1) << w.err;
+  EXPECT_NE(w.err.find("coincide (a zero chord gives no parameter step)"), std::string::npos) << w.err;
+}
+
 }  // namespace
