@@ -6,9 +6,9 @@
 // Notice: lagrange and interpolating_bezier draw the same surface: one
 //   polynomial in two bases. Its Bézier net floats off the surface; the data
 //   points stay on it.
-// Try: in hermite, drag a twist handle (the short arrows). The corner point
-//   and both tangents stay; what changes? In terrain, drag a control point up:
-//   how far does the hill spread, and which iso-lines move?
+// Try: in hermite, drag a twist handle (the square at the end of a red
+//   arrow). The corner point and both tangents stay; what changes? In terrain,
+//   drag a control point up: how far does the hill spread, which iso-lines move?
 // Keys: [l]/[L] iso-line spacing  [k] curves  [c] nets and handles  [n] labels
 //   [h] help  [Esc] quit
 // Views: lagrange, interpolating_bezier, hermite, hermite_lagrange, terrain, terrain_map
