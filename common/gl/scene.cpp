@@ -33,6 +33,11 @@ void enable_headlight() {
   glEnable(GL_NORMALIZE);
 }
 
+void look_from_above(double elevation, double azimuth) {
+  glRotated(elevation - 90, 1, 0, 0);  // z was towards the eye; now it leans up
+  glRotated(-azimuth, 0, 0, 1);
+}
+
 void draw_label(double x, double y, double z, const std::string& text, Rgb colour, int dx, int dy) {
   GLdouble model[16], projection[16];
   GLint viewport[4];

@@ -17,6 +17,11 @@ void ortho_fit(int width, int height, double half_width, double half_height, dou
 /// GL_COLOR_MATERIAL (glColor sets ambient and diffuse) and GL_NORMALIZE.
 void enable_headlight();
 
+/// Turns the current modelview so that a z-up scene is seen from `elevation`
+/// degrees above its xy-plane (90: straight down), turned by `azimuth`
+/// degrees about z: the fixed tilted camera of the surface labs.
+void look_from_above(double elevation, double azimuth);
+
 /// Text centred on the window position of the object-space point (x, y, z)
 /// under the current matrices, shifted by (dx, dy) pixels (dy downwards).
 void draw_label(double x, double y, double z, const std::string& text, Rgb colour,

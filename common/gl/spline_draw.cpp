@@ -14,9 +14,18 @@ namespace gllab {
 namespace {
 
 // Unlit lines and points in one colour; the destructor restores the state.
+// GL_LIGHTING_BIT too: with GL_COLOR_MATERIAL on, glColor also sets the
+// material, and restoring only the current colour would leave the material
+// of the last line behind (Mesa then skips a glColor of the same value).
+// Lines test depth but do not write it: where two lines cross or run on top
+// of each other, the one drawn later wins on every rasteriser. (Written
+// depths tie there, and llvmpipe and softpipe break the ties differently.)
+// So draw surfaces first, then what goes on them.
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
-    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT | GL_COLOR_BUFFER_BIT);
+    glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_LINE_BIT | GL_POINT_BIT |
+                 GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDepthMask(GL_FALSE);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
@@ -108,6 +117,28 @@ void draw_control_points_prefix(const State& state, const std::string& list, std
     register_pickable(list, i, points[i], dimension);
     if (numbered) draw_label(points[i].x, points[i].y, points[i].z, std::to_string(i), colour, 12, -12);
   }
+}
+
+void draw_control_points(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                         Rgb colour, float size, bool numbered) {
+  const std::vector<spline::Vec3>& points = state.points(list);
+  std::vector<spline::Vec3> at;
+  for (std::size_t i : indices) at.push_back(points.at(i));
+  draw_control_points_at(state, list, indices, at, colour, size);
+  if (numbered)
+    for (std::size_t k = 0; k < indices.size(); ++k)
+      draw_label(at[k].x, at[k].y, at[k].z, std::to_string(indices[k]), colour, 12, -12);
+}
+
+void draw_control_points_at(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size) {
+  const std::size_t count = state.points(list).size();  // throws for an unknown list
+  int dimension = 2;
+  for (const PointList& l : state.point_lists())
+    if (l.name == list) dimension = l.dimension;
+  draw_dots(at, colour, size);
+  for (std::size_t k = 0; k < indices.size() && k < at.size(); ++k)
+    if (indices[k] < count) register_pickable(list, indices[k], at[k], dimension);
 }
 
 void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour) {
@@ -263,6 +294,43 @@ void draw_mesh(const spline::Mesh& mesh) {
       glNormal3d(n.x, n.y, n.z);
       vertex(mesh.positions[k]);
     }
+  glEnd();
+}
+
+// glPolygonOffset(factor, units) for draw_surface: lines drawn on a surface
+// must win the depth test on llvmpipe and softpipe alike (a smaller offset let
+// softpipe hide line pixels that llvmpipe showed).
+constexpr GLfloat kSurfaceOffsetFactor = 1.f, kSurfaceOffsetUnits = 1.f;
+
+void draw_surface(const spline::Mesh& mesh, Rgb colour) {
+  draw_surface(mesh, std::vector<Rgb>(mesh.positions.size(), colour));
+}
+
+void draw_surface(const spline::Mesh& mesh, const std::vector<Rgb>& colours) {
+  // GL_LIGHTING_BIT too: the colours set the material (see Ink).
+  glPushAttrib(GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_POLYGON_BIT);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(kSurfaceOffsetFactor, kSurfaceOffsetUnits);
+  glBegin(GL_TRIANGLES);
+  for (const auto& t : mesh.triangles)
+    for (int k : t) {
+      const Rgb& c = colours[static_cast<std::size_t>(k)];
+      const spline::Vec3& n = mesh.normals[k];
+      glColor3f(c.r, c.g, c.b);
+      glNormal3d(n.x, n.y, n.z);
+      vertex(mesh.positions[k]);
+    }
+  glEnd();
+  glPopAttrib();
+}
+
+void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb colour, float width) {
+  Ink ink(colour, width);
+  glBegin(GL_LINES);
+  for (const auto& s : segments) {
+    vertex(s[0]);
+    vertex(s[1]);
+  }
   glEnd();
 }
 

@@ -4,12 +4,15 @@
 // to GL, in immediate mode, so a student can read every call. None of them
 // re-implements spline math: curves are flattened by spline::flatten_curve,
 // constructions come from spline::de_casteljau and spline::de_boor.
-// Lines and points are drawn unlit with the colour given; every function
-// restores the GL state it changes (glPushAttrib), except the matrices,
-// which it does not touch.
+// Lines and points are drawn unlit with the colour given; they test depth
+// but do not write it (where lines meet, the one drawn last wins, on every
+// rasteriser), so draw surfaces first and what goes on them after. Every
+// function restores the GL state it changes (glPushAttrib), except the
+// matrices, which it does not touch.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -48,6 +51,20 @@ void draw_control_points(const State& state, const std::string& list, Rgb colour
 /// neither drawn nor draggable (a list whose points join one at a time).
 void draw_control_points_prefix(const State& state, const std::string& list, std::size_t count, Rgb colour,
                                 float size = 9.f, bool numbered = false);
+
+/// Only the points of `list` at `indices`, drawn and made pickable as above.
+/// A lab leaves out the points it constructs from the others (a C1 neighbour,
+/// the inner Bézier points of an interpolating spline): the mouse cannot grab
+/// them, and the lab draws them itself where the construction puts them.
+void draw_control_points(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                         Rgb colour, float size = 9.f, bool numbered = false);
+
+/// Points of `list` drawn where the lab shows them: at[k] for list point
+/// indices[k], pickable as that point (the mouse starts from at[k]). For lists
+/// whose points the lab only partly uses: a height field keeps each control
+/// point above its grid position and reads only its z.
+void draw_control_points_at(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size = 9.f);
 
 /// A control polygon: a thin dashed line through P and a dot at each point
 /// (not draggable; draw_control_points makes them draggable).
@@ -105,6 +122,15 @@ void draw_curvature_comb(const std::function<std::array<spline::Vec3, 3>(double)
 
 /// The triangles with their per-vertex normals (lit as the caller set up).
 void draw_mesh(const spline::Mesh& mesh);
+/// A surface in one colour, pushed back in depth (glPolygonOffset, see
+/// kSurfaceOffset) so that curves, nets and iso-lines drawn on it afterwards
+/// stay visible.
+void draw_surface(const spline::Mesh& mesh, Rgb colour);
+/// The same with one colour per vertex (colours[k] for positions[k], e.g. by
+/// height); with GL_COLOR_MATERIAL on (enable_headlight) they are lit.
+void draw_surface(const spline::Mesh& mesh, const std::vector<Rgb>& colours);
+/// Line segments (GL_LINES), e.g. contour_segments' iso-lines.
+void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb colour, float width = 1.f);
 /// Every triangle edge as a line.
 void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width = 1.f);
 /// A needle of `length` along the normal at every `every`-th vertex.

@@ -4,6 +4,8 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstdarg>
+#include <cstdio>
 #include <array>
 #include <cstdarg>
 #include <cstdio>
@@ -183,6 +185,18 @@ void draw_text(int x, int y, const std::string& utf8, Rgb colour) {
   bitmap_text(x, y, px.height, utf8, colour);
 }
 
+std::string format_text(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
+}
+
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb colour) {
   draw_text_panel(x, y, lines, std::vector<Rgb>{colour});
 }
@@ -205,18 +219,6 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, const 
   for (std::size_t i = 0; i < lines.size(); ++i)
     bitmap_text(x + kPad, y + kPad + kGlyphHeight * static_cast<int>(i), px.height, lines[i],
                 colours.empty() ? Rgb{1.f, 1.f, 1.f} : colours[std::min(i, colours.size() - 1)]);
-}
-
-std::string format_text(const char* format, ...) {
-  va_list args, again;
-  va_start(args, format);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
-  std::string text(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
-  if (n > 0) std::vsnprintf(text.data(), text.size() + 1, format, again);
-  va_end(again);
-  return text;
 }
 
 }  // namespace gllab

@@ -29,10 +29,10 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb co
 /// The same with a colour per line (a legend); lines beyond the colours get the last one.
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, const std::vector<Rgb>& colours);
 
+/// printf into a std::string, for labels and panels: format_text("k = %.2f", k).
+std::string format_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
 /// Width in pixels of the text drawn by draw_text (one glyph per code point).
 int text_width(const std::string& utf8);
-
-/// printf into a std::string, for labels and panels: format_text("t = %.4g", t).
-std::string format_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 }  // namespace gllab

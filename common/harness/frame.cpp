@@ -2,6 +2,7 @@
 #include "harness/frame.h"
 
 #include <algorithm>
+#include <exception>
 #include <sstream>
 #include <stdexcept>
 

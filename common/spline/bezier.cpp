@@ -372,6 +372,29 @@ Vec3 bezier_end_derivative(const BezierCurve& curve, int k) {
   return falling_factorial(n, k) / std::pow(curve.b - curve.a, k) * sum;
 }
 
+// ---- joining segments ----------------------------------------------------------
+
+BezierContinuation continuation_points(const BezierCurve& a, int k, double next_length) {
+  const std::string what = "continuation_points";
+  validate_as(a, what);
+  const int n = bezier_degree(a);
+  if (k < 0 || k > n)
+    fail(what + ": continuity k=" + std::to_string(k) + " must lie in [0, " + std::to_string(n) + "] (the degree)");
+  require_finite(next_length, what, "next_length");
+  if (!(next_length > 0)) fail(what + ": next_length=" + num(next_length) + " must be > 0");
+  BezierContinuation out;
+  out.tau = 1 + next_length / (a.b - a.a);
+  // de Casteljau at tau on the last k + 1 points only: b_{n-k}^r .. b_{n-r}^r
+  // need nothing to their left.
+  std::vector<Vec3> level(a.P.end() - (k + 1), a.P.end());
+  for (int r = 0; r <= k; ++r) {
+    out.levels.push_back(level);
+    out.points.push_back(level.back());
+    if (r < k) level = de_casteljau_step(level, out.tau);
+  }
+  return out;
+}
+
 // ---- integral --------------------------------------------------------------------
 
 Vec3 bezier_integral(const BezierCurve& curve) {

@@ -124,6 +124,37 @@ BezierSplit subdivide(const BezierCurve& curve, double t);
 /// times = 0 returns the curve unchanged. Throws if times < 0.
 BezierCurve degree_elevate(const BezierCurve& curve, int times = 1);
 
+// ---- joining segments (seed 000 §1.6 "Bézier splines"; seed 004 "Joining of Bezier Curves")
+
+/// What continuation_points returns: the next segment's first points and the
+/// part of the de Casteljau scheme they come from.
+struct BezierContinuation {
+  /// b_0..b_k of the next segment: points[r] = b_{n-r}^r(tau).
+  std::vector<Vec3> points;
+  /// levels[r] = b_{n-k}^r(tau) .. b_{n-r}^r(tau), r = 0..k (k - r + 1 points):
+  /// levels[r][j] lies on the line through levels[r-1][j] and levels[r-1][j+1],
+  /// beyond the second (tau > 1), so these are the seeds' construction lines.
+  /// For a cubic and k = 2: levels[1][0] is the de Boor point d of the joint.
+  std::vector<std::vector<Vec3>> levels;
+  double tau = 0;  // the next segment's far end in a's local parameter
+};
+
+/// The first k + 1 Bézier points of the segment that follows `a` over
+/// [a.b, a.b + next_length] with C^k continuity at a.b (seed 000 §1.6 "Bézier
+/// splines", with Delta_i = b - a and Delta_{i+1} = next_length): the
+/// polynomial of `a` continued, i.e. de Casteljau at tau = 1 + next_length /
+/// (b - a), outside [0, 1] (seed 000 §1.7, "evaluating ... outside of the
+/// interval"; the curve case of continuation_rows in surface.h). The points
+/// satisfy the seeds' conditions, for a cubic (m = 3) at the joint t_{i+1}:
+///   C0: b_0 = a_n
+///   C1: (a_n - a_{n-1}) / Delta_i = (b_1 - b_0) / Delta_{i+1}   (seed eq. 1)
+///   C2: d = a_{n-1} + Delta_{i+1}/Delta_i (a_{n-1} - a_{n-2})   (seed eq. 2)
+///       b_2 = b_1 + Delta_{i+1}/Delta_i (b_1 - d)               (seed eq. 3)
+/// G1 (seed 004: a_n - a_{n-1} = k (b_1 - b_0)) is the C1 point for a
+/// next_length of Delta_i / k: same direction, another speed.
+/// Needs 0 <= k <= n and next_length > 0 and finite.
+BezierContinuation continuation_points(const BezierCurve& a, int k, double next_length);
+
 // ---- derivatives (seed 000 §1.6 property 11 and "Derivatives") ----------
 
 /// The k-th derivative as a Bézier curve (the hodograph for k = 1) of degree

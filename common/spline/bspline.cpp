@@ -1220,6 +1220,37 @@ std::vector<BezierCurve> bezier_decompose(const BsplineCurve& curve) {
   return out;
 }
 
+BsplineCurve from_bezier_segments(const std::vector<BezierCurve>& segments) {
+  const std::string what = "from_bezier_segments";
+  if (segments.empty()) fail(what + ": no segments");
+  BsplineCurve out;
+  out.p = static_cast<int>(segments.front().P.size()) - 1;
+  out.dimension = 2;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const BezierCurve& s = segments[i];
+    const std::string name = what + ": " + at("segment", i);
+    const int p = static_cast<int>(s.P.size()) - 1;
+    if (p < 1) fail(name + " has degree " + std::to_string(p) + " (need >= 1)");
+    if (p != out.p) fail(name + " has degree " + std::to_string(p) + ", segment[0] degree " + std::to_string(out.p));
+    if (!(s.a < s.b) || !std::isfinite(s.a) || !std::isfinite(s.b))
+      fail(name + ": interval [" + num(s.a) + ", " + num(s.b) + "] is not a finite a < b");
+    for (std::size_t j = 0; j < s.P.size(); ++j) require_finite(s.P[j], name, at("P", j));
+    if (i > 0) {
+      const BezierCurve& prev = segments[i - 1];
+      if (s.a != prev.b)
+        fail(name + " starts at t=" + num(s.a) + ", segment[" + std::to_string(i - 1) + "] ends at t=" + num(prev.b));
+      if (s.P.front() != prev.P.back())
+        fail(name + " starts at " + num(s.P.front()) + ", segment[" + std::to_string(i - 1) + "] ends at " +
+             num(prev.P.back()));
+    }
+    out.U.insert(out.U.end(), i == 0 ? p + 1 : p, s.a);
+    out.P.insert(out.P.end(), s.P.begin() + (i == 0 ? 0 : 1), s.P.end());
+    if (s.dimension != 2) out.dimension = 3;
+  }
+  out.U.insert(out.U.end(), out.p + 1, segments.back().b);
+  return out;
+}
+
 std::pair<BsplineCurve, BsplineCurve> split(const BsplineCurve& curve, double u) {
   validate(curve);
   const ParamInterval dom = domain(curve.p, curve.U);

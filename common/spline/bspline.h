@@ -225,6 +225,17 @@ std::vector<BezierCurve> bezier_decompose(const BsplineCurve& curve);
 /// single-span curve with knots {a x (p+1), b x (p+1)}.
 std::vector<BsplineCurve> bezier_segments(const BsplineCurve& curve);
 
+/// The inverse of bezier_decompose: Bézier segments of one degree p >= 1,
+/// each starting where the previous one ends (same point, same parameter),
+/// as one B-spline curve. The knots are a x (p+1), every joint x p, b x (p+1),
+/// and the control points are the segments' points with each joint once
+/// (seed 000 §1.6, "B-splines": a B-spline whose knots all have multiplicity
+/// m - 1, m the order, has the Bézier points as its control points). The
+/// curve is only C0 at the joints, unless the points make it smoother.
+/// Throws for no segments, a degree < 1 or different degrees, a gap between
+/// intervals, or a segment that does not start at the previous one's end.
+BsplineCurve from_bezier_segments(const std::vector<BezierCurve>& segments);
+
 /// Splits at u strictly inside the domain (by inserting u up to multiplicity p):
 /// first covers [U[p], u], second [u, U[n+1]]. Each keeps the original
 /// parameters and the end knots it inherits (clamped at u).

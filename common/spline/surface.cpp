@@ -512,6 +512,31 @@ BezierSurface joined_patch(const BezierSurface& a, const BezierSurface& next, in
   return out;
 }
 
+BezierSurface constant_twist_patch(const BezierCurve& edge_u, const BezierCurve& edge_v, Vec3 twist) {
+  const std::string what = "constant_twist_patch";
+  validate(edge_u);
+  validate(edge_v);
+  require_finite(twist, what, "twist");
+  BezierSurface out;
+  out.n = static_cast<int>(edge_u.P.size()) - 1;
+  out.m = static_cast<int>(edge_v.P.size()) - 1;
+  if (out.n < 1 || out.m < 1)
+    fail(what + ": degrees " + ij_text(out.n, out.m) + " (the edges need at least 2 points each)");
+  if (edge_u.P[0] != edge_v.P[0])
+    fail(what + ": the edges start at different corners: edge_u " + num(edge_u.P[0]) + ", edge_v " +
+         num(edge_v.P[0]));
+  out.a = edge_u.a, out.b = edge_u.b, out.c = edge_v.a, out.d = edge_v.b;
+  out.P.resize(uz((out.n + 1) * (out.m + 1)));
+  // Each cell's share of the twist: X_uv = n m Delta^{11} b / ((b - a)(d - c)).
+  const Vec3 cell = (out.b - out.a) * (out.d - out.c) / (out.n * out.m) * twist;
+  for (int i = 0; i <= out.n; ++i)
+    for (int j = 0; j <= out.m; ++j)
+      out.point(i, j) = i == 0   ? edge_v.P[uz(j)]
+                        : j == 0 ? edge_u.P[uz(i)]
+                                 : edge_u.P[uz(i)] + (edge_v.P[uz(j)] - edge_v.P[0]) + double(i * j) * cell;
+  return out;
+}
+
 // ==== Lagrange, Hermite, Hermite–Lagrange =========================================
 
 namespace {

@@ -179,6 +179,19 @@ std::vector<std::vector<Vec3>> continuation_rows(const BezierSurface& a, int k, 
 BezierSurface joined_patch(const BezierSurface& a, const BezierSurface& next, int k,
                            SurfaceDirection direction = SurfaceDirection::U);
 
+/// The patch whose twist vector is the same everywhere (seed 000 §1.7, "The
+/// twist vector": surfaces with zero and with constant twist). Its boundary
+/// curves through the corner (a, c) are given, X(u, c) = edge_u over [a, b]
+/// and X(a, v) = edge_v over [c, d], and
+///   b_ij = b_i0 + (b_0j - b_00) + i j (b - a)(d - c) / (n m) * twist,
+/// so every cell of the net has Delta^{11} b_ij = (b - a)(d - c) twist / (n m)
+/// and X_uv = n m Delta^{11} b_ij / ((b - a)(d - c)) = twist at every (u, v)
+/// (the seeds' X_st(0,0) = 9 (b_11 - b_10 - b_01 + b_00) on every cell).
+/// twist = 0: the translational surface X(u, c) + X(a, v) - X(a, c), every
+/// v-curve the same curve moved along edge_u. The rows j = 0 and i = 0 are
+/// copied exactly. Needs degrees n, m >= 1 and edge_u.P[0] == edge_v.P[0].
+BezierSurface constant_twist_patch(const BezierCurve& edge_u, const BezierCurve& edge_v, Vec3 twist);
+
 // ==== Lagrange, Hermite and Hermite–Lagrange surfaces (seed 000 §1.7) =======
 
 /// f(u, v) = sum_i sum_j c_ij L_i(u) L_j(v), the tensor product of the Lagrange

@@ -1588,4 +1588,32 @@ std::vector<std::array<int, 2>> boundary_edges(const Mesh& mesh) {
   return out;
 }
 
+std::vector<std::array<Vec3, 2>> contour_segments(const Mesh& mesh, Vec3 direction, double level) {
+  const std::string what = "contour_segments";
+  require_finite(direction, what, "direction");
+  require_finite(level, what, "level");
+  if (norm(direction) == 0) fail(what + ": direction is the zero vector");
+  std::vector<double> h;  // height above the level, per vertex
+  for (const Vec3& p : mesh.positions) h.push_back(dot(p, direction) - level);
+  const auto below = [&h](int k) { return h[static_cast<std::size_t>(k)] < 0; };
+  // The point where h = 0 on edge (i, j), one end below and one at or above:
+  // always interpolated from the lower index, so both triangles get the same point.
+  const auto crossing = [&](int i, int j) {
+    if (i > j) std::swap(i, j);
+    const double hi = h[static_cast<std::size_t>(i)], hj = h[static_cast<std::size_t>(j)];
+    return lerp(mesh.positions[static_cast<std::size_t>(i)], mesh.positions[static_cast<std::size_t>(j)],
+                hi / (hi - hj));
+  };
+  std::vector<std::array<Vec3, 2>> out;
+  for (const auto& t : mesh.triangles) {
+    Vec3 ends[2];
+    int found = 0;
+    for (int k = 0; k < 3; ++k)
+      if (below(t[k]) != below(t[(k + 1) % 3])) ends[found++] = crossing(t[k], t[(k + 1) % 3]);
+    // A vertex at the level with both neighbours below crosses "twice" at itself: no segment.
+    if (found == 2 && ends[0] != ends[1]) out.push_back({ends[0], ends[1]});
+  }
+  return out;
+}
+
 }  // namespace gllab::spline

@@ -238,4 +238,19 @@ double mesh_area(const Mesh& mesh);
 /// its outline here.
 std::vector<std::array<int, 2>> boundary_edges(const Mesh& mesh);
 
+/// Iso-curves (seed 000 §1.7, "Iso-curves": the height curves f = const of a
+/// scalar field) on a triangle mesh: where the height h(p) = dot(p, direction),
+/// linear on each triangle, equals level. Each triangle the level crosses
+/// gives one segment between the two edge points where h = level (linear
+/// interpolation along the edge; "marching triangles"). A vertex exactly at
+/// the level counts as above it (a level through a row of vertices is drawn
+/// once, and a vertex that only touches the level gives no point-sized
+/// segment; only a mesh edge at the level with both neighbours below, a ridge
+/// touching it, is drawn by both triangles). Every edge point is computed
+/// from the edge's two vertices in index order, so the segments of
+/// neighbouring triangles meet exactly. On a mesh within tolerance e of a surface, the points lie within
+/// e of the surface's iso-curve in height. Throws for a zero or non-finite
+/// direction or a non-finite level.
+std::vector<std::array<Vec3, 2>> contour_segments(const Mesh& mesh, Vec3 direction, double level);
+
 }  // namespace gllab::spline

@@ -939,5 +939,75 @@ TEST(BezierErrors, InterpolationData) {
   expect_contains(error_of([] { bezier_interpolate({{1, 1, 1}}, {0.5}); }), "pass a and b explicitly");
 }
 
+// ---- joining segments: continuation_points (seed 000 §1.6 "Bézier splines"; seed 004) ----
+
+// The seed's conditions at the joint of a cubic on [t_i, t_{i+1}] = [1, 3]
+// (Delta_i = 2) and the next segment of length Delta_{i+1} = 3.
+TEST(ContinuationPoints, SatisfyTheSeedsC1AndC2ConditionsAndEquations2And3) {
+  const BezierCurve a = seed_cubic(1, 3);
+  const double d0 = 2, d1 = 3;
+  const BezierContinuation c = continuation_points(a, 2, d1);
+  ASSERT_EQ(c.points.size(), 3u);
+  EXPECT_DOUBLE_EQ(c.tau, 2.5);  // (t_{i+2} - t_i) / Delta_i
+  const Vec3 a1 = a.P[1], a2 = a.P[2], a3 = a.P[3], b0 = c.points[0], b1 = c.points[1], b2 = c.points[2];
+  const double tol = kSeedPointTol;
+  expect_near_vec(b0, a3, 0);                                                  // C0
+  expect_near_vec((a3 - a2) / d0, (b1 - b0) / d1, tol);                        // C1
+  expect_near_vec((a3 - 2 * a2 + a1) / (d0 * d0), (b2 - 2 * b1 + b0) / (d1 * d1), tol);  // C2
+  // Seed eq. 1-3 with b_{3(i+1)} = a3: the de Boor point d and the next points.
+  const Vec3 d = a2 + d1 / d0 * (a2 - a1);
+  expect_near_vec(b1, a3 + d1 / d0 * (a3 - a2), tol);
+  expect_near_vec(c.levels[1][0], d, tol);
+  expect_near_vec(b2, b1 + d1 / d0 * (b1 - d), tol);
+  // The construction lines: each level's point lies on the line through two of the previous.
+  for (std::size_t r = 1; r < c.levels.size(); ++r)
+    for (std::size_t j = 0; j < c.levels[r].size(); ++j)
+      expect_near_vec(c.levels[r][j], lerp(c.levels[r - 1][j], c.levels[r - 1][j + 1], c.tau), tol);
+}
+
+// Property: the first k derivatives agree at the joint (bezier_end_derivative
+// of a, bezier_start_derivative of the next segment over [b, b + L]) for
+// random curves of degree 0..6 and every k <= n. With k = n all n + 1
+// derivatives agree: the next segment is a's polynomial continued.
+TEST(ContinuationPoints, DerivativesAgreeUpToOrderK) {
+  std::mt19937 rng(41);
+  for (int c = 0; c < kRandomCases; ++c) {
+    const BezierCurve a = random_curve(rng, c, 6);
+    const int n = bezier_degree(a);
+    const double h = a.b - a.a, L = std::uniform_real_distribution<double>(0.3, 2.5)(rng);
+    for (int k = 0; k <= n; ++k) {
+      BezierCurve next;
+      next.a = a.b;
+      next.b = a.b + L;
+      next.P = continuation_points(a, k, L).points;
+      while (static_cast<int>(next.P.size()) <= n) next.P.push_back(random_point(rng));
+      // de Casteljau at tau > 1 grows round-off by up to (2 tau - 1) per level,
+      // and an r-th derivative is the points times (n / interval)^r.
+      const double tau = 1 + L / h;
+      for (int r = 0; r <= k; ++r)
+        expect_near_vec(bezier_start_derivative(next, r), bezier_end_derivative(a, r),
+                        kExact * scale_of(a.P) * std::pow(2 * tau - 1, n) * std::pow(n / std::min(h, L), r));
+    }
+  }
+}
+
+// Seed 004: G1 is p_n - p_{n-1} = k (r_1 - r_0); it is the C1 point for a next
+// interval of Delta_i / k (the same direction, another speed).
+TEST(ContinuationPoints, G1WithFactorKIsTheC1PointForLengthDeltaOverK) {
+  const BezierCurve a = seed_cubic(0, 2);
+  for (double k : {0.5, 1.0, 2.0, 3.0}) {
+    const std::vector<Vec3> r = continuation_points(a, 1, (a.b - a.a) / k).points;
+    expect_near_vec(a.P[3] - a.P[2], k * (r[1] - r[0]), kSeedPointTol);
+  }
+}
+
+TEST(ContinuationPoints, ErrorsNameKAndTheLength) {
+  const BezierCurve a = seed_cubic();
+  EXPECT_ERROR_HAS(continuation_points(a, 4, 1), "continuity k=4 must lie in [0, 3]");
+  EXPECT_ERROR_HAS(continuation_points(a, -1, 1), "continuity k=-1");
+  EXPECT_ERROR_HAS(continuation_points(a, 1, 0), "next_length=0 must be > 0");
+  EXPECT_ERROR_HAS(continuation_points(a, 1, std::nan("")), "next_length=nan is not finite");
+}
+
 }  // namespace
 }  // namespace gllab::spline

@@ -1064,5 +1064,62 @@ TEST(GrevilleAbscissae, DegreeBelowOneOrTooFewKnotsThrow) {
                    "greville_abscissae: 4 knots for degree 3 leave no control point (at least p + 2 = 5 needed)");
 }
 
+// ---- from_bezier_segments: the inverse of bezier_decompose -------------------------
+
+// Seed 000 §1.6: a B-spline with every knot of multiplicity p has the Bézier
+// points as control points. Round trip: decompose random polynomial curves,
+// join the pieces, decompose again: the same pieces, and the same curve.
+TEST(FromBezierSegments, RoundTripWithBezierDecompose) {
+  CurveMaker make(61);
+  for (int c = 0; c < kRandomCurves; ++c) {
+    const BsplineCurve curve = make.make(false, make.integer(0, 1) == 1);
+    const std::vector<BezierCurve> pieces = bezier_decompose(curve);
+    const BsplineCurve joined = from_bezier_segments(pieces);
+    EXPECT_EQ(joined.p, curve.p);
+    EXPECT_EQ(joined.P.size(), pieces.size() * curve.p + 1);
+    const ParamInterval dom = domain(curve);
+    EXPECT_EQ(domain(joined).a, dom.a);
+    EXPECT_EQ(domain(joined).b, dom.b);
+    expect_same_curve(curve, joined, samples(curve), "joined pieces");
+    const std::vector<BezierCurve> again = bezier_decompose(joined);
+    ASSERT_EQ(again.size(), pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      for (std::size_t j = 0; j < pieces[i].P.size(); ++j) EXPECT_EQ(again[i].P[j], pieces[i].P[j]) << i << "," << j;
+  }
+}
+
+TEST(FromBezierSegments, KnotsAndPointsOfTwoCubics) {
+  BezierCurve s0, s1;
+  s0.P = {{0, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}};
+  s0.a = 0, s0.b = 2, s0.dimension = 2;
+  s1.P = {{3, 0, 0}, {4, -1, 0}, {5, -1, 0}, {6, 0, 0}};
+  s1.a = 2, s1.b = 3, s1.dimension = 2;
+  const BsplineCurve c = from_bezier_segments({s0, s1});
+  EXPECT_EQ(c.U, (std::vector<double>{0, 0, 0, 0, 2, 2, 2, 3, 3, 3, 3}));
+  ASSERT_EQ(c.P.size(), 7u);
+  EXPECT_EQ(c.P[3], (Vec3{3, 0, 0}));
+  EXPECT_EQ(c.dimension, 2);
+}
+
+TEST(FromBezierSegments, ErrorsNameTheSegment) {
+  BezierCurve s0, s1;
+  s0.P = {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}};
+  s1.P = {{2, 0, 0}, {3, 1, 0}, {4, 0, 0}};
+  s1.a = 1, s1.b = 2;
+  EXPECT_ERROR_HAS(from_bezier_segments({}), "no segments");
+  BezierCurve gap = s1;
+  gap.a = 1.5;
+  EXPECT_ERROR_HAS(from_bezier_segments({s0, gap}), "segment[1] starts at t=1.5, segment[0] ends at t=1");
+  BezierCurve moved = s1;
+  moved.P[0] = {2, 0.5, 0};
+  EXPECT_ERROR_HAS(from_bezier_segments({s0, moved}), "segment[1] starts at (2, 0.5, 0), segment[0] ends at (2, 0, 0)");
+  BezierCurve cubic = s1;
+  cubic.P.push_back({5, 0, 0});
+  EXPECT_ERROR_HAS(from_bezier_segments({s0, cubic}), "segment[1] has degree 3, segment[0] degree 2");
+  BezierCurve point = s0;
+  point.P = {{0, 0, 0}};
+  EXPECT_ERROR_HAS(from_bezier_segments({point}), "segment[0] has degree 0");
+}
+
 }  // namespace
 }  // namespace gllab::spline

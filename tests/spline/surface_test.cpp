@@ -452,6 +452,54 @@ TEST(JoinedPatch, RejectsMismatchedDegreesAndEdges) {
 
 // ==== interpolating Bézier surfaces and Lagrange surfaces ==================================
 
+// ==== Zero and constant twist (seed 000 §1.7 "The twist vector") =======================
+
+BezierCurve RandomEdge(std::mt19937& rng, int degree, Vec3 start, double a, double b) {
+  BezierCurve e;
+  e.P.push_back(start);
+  for (int i = 1; i <= degree; ++i) e.P.push_back(RandomPoint(rng));
+  e.a = a, e.b = b;
+  return e;
+}
+
+TEST(ConstantTwistPatch, TwistIsTheGivenVectorEverywhereAndTheEdgesAreCopied) {
+  std::mt19937 rng(71);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Vec3 corner = RandomPoint(rng), twist = trial % 4 == 0 ? Vec3{} : RandomPoint(rng);
+    const double a = Uniform(rng, -1, 1), b = a + Uniform(rng, 0.5, 2), c = Uniform(rng, -1, 1),
+                 d = c + Uniform(rng, 0.5, 2);
+    const BezierCurve eu = RandomEdge(rng, UniformInt(rng, 1, 4), corner, a, b);
+    const BezierCurve ev = RandomEdge(rng, UniformInt(rng, 1, 4), corner, c, d);
+    const BezierSurface s = constant_twist_patch(eu, ev, twist);
+    for (int i = 0; i <= s.n; ++i) EXPECT_EQ(s.point(i, 0), eu.P[static_cast<std::size_t>(i)]);
+    for (int j = 0; j <= s.m; ++j) EXPECT_EQ(s.point(0, j), ev.P[static_cast<std::size_t>(j)]);
+    // Seed: X_st(0,0) = n m (b_11 - b_10 - b_01 + b_00) / interval lengths, at every (u, v).
+    for (int k = 0; k <= 10; ++k)
+      for (int l = 0; l <= 10; ++l) {
+        const double u = a + (b - a) * k / 10, v = c + (d - c) * l / 10;
+        EXPECT_TRUE(RelNear(surface_partials(s, u, v).Suv, twist, kSameValue)) << trial << " at " << u << "," << v;
+      }
+    if (twist == Vec3{}) {
+      // Zero twist: the translational surface X(u, v) = X(u, c) + X(a, v) - X(a, c).
+      for (int k = 0; k <= 10; ++k) {
+        const double u = a + (b - a) * k / 10, v = c + (d - c) * (10 - k) / 10;
+        EXPECT_TRUE(RelNear(surface_point(s, u, v), bezier_point(eu, u) + bezier_point(ev, v) - corner, kSameValue));
+      }
+    }
+  }
+}
+
+TEST(ConstantTwistPatch, ErrorsNameTheCornersAndDegrees) {
+  BezierCurve eu, ev;
+  eu.P = {{0, 0, 0}, {1, 0, 0}};
+  ev.P = {{0, 0, 1}, {0, 1, 0}};
+  EXPECT_NE(What([&] { constant_twist_patch(eu, ev, {}); })
+                .find("constant_twist_patch: the edges start at different corners: edge_u (0, 0, 0), edge_v (0, 0, 1)"),
+            std::string::npos);
+  ev.P = {{0, 0, 0}};
+  EXPECT_NE(What([&] { constant_twist_patch(eu, ev, {}); }).find("degrees (1, 0)"), std::string::npos);
+}
+
 TEST(InterpolatingBezierSurface, ReproducesItsGridAndEqualsTheLagrangeSurface) {
   // seed 000 §1.7 "Proof": f(s_k, t_l) = p_kl. The interpolating polynomial is
   // unique, so the Lagrange surface through the same grid is the same surface.

@@ -875,5 +875,78 @@ TEST(TessellatePatches, SubdividedBezierHalvesWeldWithoutCracks) {
   }
 }
 
+// ---- contour_segments: iso-curves on a mesh (seed 000 §1.7 "Iso-curves") ----------------
+
+double segment_length(const std::array<Vec3, 2>& s) { return norm(s[1] - s[0]); }
+
+// On the saddle z = xy the mesh's vertices lie on the surface; each contour
+// point is linear in z along its edge, so its height is the level up to
+// round-off, and the segments chain: every end is shared by two segments except
+// the two ends of each open curve, which lie on the domain's boundary.
+TEST(ContourSegments, SaddleContoursAreAtTheLevelAndChainIntoCurves) {
+  const Mesh m = tessellate_surface(saddle, {-1, 1, -1, 1}, TessellationOptions::fixed_steps(10, 10));
+  for (double level : {-0.5, -0.1, 0.3, 0.7}) {
+    const auto segments = contour_segments(m, {0, 0, 1}, level);
+    ASSERT_FALSE(segments.empty()) << level;
+    std::map<std::array<double, 3>, int> ends;
+    for (const auto& sg : segments)
+      for (const Vec3& p : sg) {
+        EXPECT_NEAR(p.z, level, kRoundOff) << level;
+        ++ends[{p.x, p.y, p.z}];
+      }
+    int open_ends = 0;
+    for (const auto& [p, count] : ends) {
+      EXPECT_LE(count, 2) << level;
+      if (count == 1) {
+        ++open_ends;
+        EXPECT_TRUE(std::fabs(p[0]) == 1 || std::fabs(p[1]) == 1) << "open end inside the domain at " << p[0] << ", " << p[1];
+      }
+    }
+    EXPECT_EQ(open_ends, 4) << level;  // xy = c is a hyperbola: two branches across the square
+  }
+}
+
+// A linear height field is reproduced exactly by any mesh: the contours of
+// z = x + 2 y are the lines x + 2 y = c, cut to the square.
+TEST(ContourSegments, LinearFieldGivesStraightLinesOfTheRightLength) {
+  const auto tilted = [](double u, double v) {
+    return SurfaceSample{{u, v, u + 2 * v}, normalized(Vec3{-1, -2, 1}), {1, 0, 1}, {0, 1, 2}};
+  };
+  const Mesh m = tessellate_surface(tilted, {-1, 1, -1, 1}, TessellationOptions::fixed_steps(7, 5));
+  const double level = 0.5;
+  double length = 0;
+  for (const auto& sg : contour_segments(m, {0, 0, 1}, level)) {
+    for (const Vec3& p : sg) EXPECT_NEAR(p.x + 2 * p.y, level, kRoundOff);
+    length += segment_length(sg);
+  }
+  // x + 2y = 0.5 crosses the square from (-1, 0.75) to (1, -0.25): length sqrt(4 + 1).
+  EXPECT_NEAR(length, std::sqrt(5.0), kRoundOff);
+}
+
+// A level through grid vertices (z = x at x = 0, a column of the 4 x 4 grid)
+// is drawn once: no doubled and no zero-length segments.
+TEST(ContourSegments, LevelThroughVerticesIsDrawnOnce) {
+  const auto ramp = [](double u, double v) { return SurfaceSample{{u, v, u}, normalized(Vec3{-1, 0, 1}), {1, 0, 1}, {0, 1, 0}}; };
+  const Mesh m = tessellate_surface(ramp, {-1, 1, -1, 1}, TessellationOptions::fixed_steps(4, 4));
+  double length = 0;
+  for (const auto& sg : contour_segments(m, {0, 0, 1}, 0)) {
+    EXPECT_GT(segment_length(sg), 0);
+    length += segment_length(sg);
+  }
+  EXPECT_NEAR(length, 2, kRoundOff);  // the line x = 0 from y = -1 to y = 1, once
+  EXPECT_TRUE(contour_segments(m, {0, 0, 1}, 1.5).empty());  // above the mesh
+}
+
+TEST(ContourSegments, ErrorsNameTheDirectionAndLevel) {
+  const Mesh m = tessellate_surface(plane, {0, 1, 0, 1}, TessellationOptions::fixed_steps(2, 2));
+  EXPECT_THROW(contour_segments(m, {0, 0, 0}, 0), std::invalid_argument);
+  try {
+    contour_segments(m, {0, 0, 1}, std::nan(""));
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("contour_segments: level=nan is not finite"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace gllab::spline
