@@ -255,6 +255,7 @@ void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb 
 }
 
 double plot_ceiling(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return 1;  // nothing to scale (all zero), or nothing sensible
   const double e = std::pow(10.0, std::floor(std::log10(x)));
   for (double m : {1.0, 2.0, 5.0})
     if (m * e >= x) return m * e;

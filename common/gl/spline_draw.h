@@ -105,9 +105,10 @@ void draw_plot_function(const PlotFrame& frame, const std::function<double(doubl
 /// Short ticks at the bottom of the frame at these x (e.g. the knots).
 void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb colour);
 
-/// 1, 2 or 5 times a power of ten, the smallest such value >= x (x > 0): a
-/// plot top that reads well (3.7e-7 -> 5e-7). Labs 13 and 14 scale their
-/// GLU-difference and error plots with it.
+/// 1, 2 or 5 times a power of ten, the smallest such value >= x: a plot top
+/// that reads well (3.7e-7 -> 5e-7); 1 when x is not > 0 or not finite (a
+/// plot of zeros). Labs 13 and 14 scale their GLU-difference and error plots
+/// with it.
 double plot_ceiling(double x);
 
 // ---- labels ------------------------------------------------------------------------

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace {
 
 // The definition: the smallest of 1, 2, 5 x 10^k that is >= x.
@@ -15,6 +17,11 @@ TEST(PlotCeiling, RoundsUpToOneTwoOrFiveTimesAPowerOfTen) {
   EXPECT_EQ(gllab::plot_ceiling(7.0), 10.0);
   EXPECT_DOUBLE_EQ(gllab::plot_ceiling(3.7e-7), 5e-7);
   EXPECT_DOUBLE_EQ(gllab::plot_ceiling(0.0607), 0.1);
+  // Nothing to scale: a plot of zeros (or of garbage) keeps the top at 1.
+  EXPECT_EQ(gllab::plot_ceiling(0.0), 1.0);
+  EXPECT_EQ(gllab::plot_ceiling(-2.0), 1.0);
+  EXPECT_EQ(gllab::plot_ceiling(HUGE_VAL), 1.0);
+  EXPECT_EQ(gllab::plot_ceiling(std::nan("")), 1.0);
 }
 
 // Seed 000's knot insertion example, before and after inserting t = 0.5.
