@@ -248,9 +248,9 @@ bool keyboard(State& s, unsigned char key) {
 gllab::Lab gllab::define_lab() {
   Lab lab{"14_nurbs_curves",
           "lab 14 · NURBS curves",
-          {{"weights", "one weight pulls the cubic towards its point or pushes it away"},
-           {"conics", "the seeds' conic sections from r: line, ellipse, parabola, hyperbola"},
-           {"circle", "the exact NURBS circle against the same points without weights"},
+          {{"weights", "one weight pulls the curve to its point or pushes it away"},
+           {"conics", "conics from r: line, ellipse, parabola, hyperbola"},
+           {"circle", "the exact NURBS circle vs the same points without weights"},
            {"own_vs_glu", "gluNurbsCurve with GL_MAP1_VERTEX_4 under the own curves"},
            {"not_premultiplied", "GLU fed (x, y, z, w) instead of (w x, w y, w z, w)"}},
           {{"point", 3, 0, double(kPoints.size() - 1), "the control point whose weight [w] changes"},
