@@ -88,15 +88,16 @@ void draw_weights(const State& s) {
   const int i = s.integer("point");
   const double xi = gllab::spline::greville_abscissae(kDegree, weighted(s, 1).U)[i];  // u "of" P_i
   gllab::draw_control_polygon(s.points("P"), kPolygon);
-  std::vector<Vec3> line = {s.points("P")[i]};  // C(xi) for every weight: on one line through P_i
+  std::vector<Vec3> line;  // C(xi) for every weight: on one line through P_i
   for (std::size_t k = 0; k < std::size(kFamily); ++k) {
     const BsplineCurve c = weighted(s, kFamily[k]);
     gllab::draw_curve(c, kPalette[k], 1.f);
     line.push_back(gllab::spline::curve_point(c, xi));
     gllab::draw_label(line.back().x, line.back().y, 0, "w=" + weight_text(kFamily[k]), kPalette[k], 34, 4);
   }
-  gllab::draw_dashed_polyline(line, kText);
   gllab::draw_dots(line, kText, 5.f);
+  line.push_back(s.points("P")[i]);
+  gllab::draw_dashed_polyline(line, kText);
   gllab::draw_curve(weighted(s, s.get("weight")), kCurve, 3.f);
   gllab::draw_control_points(s, "P", kPoint, 9.f, true);
   gllab::draw_text_panel(8, 420,
