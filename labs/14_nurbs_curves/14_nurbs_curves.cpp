@@ -98,7 +98,7 @@ void draw_weights(const State& s) {
   gllab::draw_dots(line, kText, 5.f);
   line.push_back(s.points("P")[i]);
   gllab::draw_dashed_polyline(line, kText);
-  gllab::draw_curve(weighted(s, s.get("weight")), kCurve, 3.f);
+  gllab::draw_curve(weighted(s, s.get("weight")), kCurve, 4.f);
   gllab::draw_control_points(s, "P", kPoint, 9.f, true);
   gllab::draw_text_panel(8, 420,
                          {fmt("blue: w%.0f = ", i) + weight_text(s.get("weight")) + ", the other weights 1",
