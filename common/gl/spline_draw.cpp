@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "gl/gl.h"
 #include "gl/pick.h"
@@ -430,6 +431,28 @@ void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb 
     glVertex3d(p.x, frame.bottom - h, 0);
   }
   glEnd();
+}
+
+double plot_ceiling(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return 1;  // nothing to scale (all zero), or nothing sensible
+  const double e = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * e >= x) return m * e;
+  return 10 * e;
+}
+
+// ---- labels ------------------------------------------------------------------------
+
+std::string knot_vector_text(const std::vector<double>& U) {
+  std::string text;
+  for (std::size_t k = 0; k < U.size(); ++k) {
+    if (k > 0 && U[k] == U[k - 1]) continue;
+    char number[32];
+    std::snprintf(number, sizeof number, " %g", U[k]);
+    const int m = spline::knot_multiplicity(U, U[k]);
+    text += number + (m > 1 ? "x" + std::to_string(m) : "");
+  }
+  return text;
 }
 
 }  // namespace gllab

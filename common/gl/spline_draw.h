@@ -172,4 +172,16 @@ void draw_plot_function(const PlotFrame& frame, const std::function<double(doubl
 /// Short ticks at the bottom of the frame at these x (e.g. the knots).
 void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb colour);
 
+/// 1, 2 or 5 times a power of ten, the smallest such value >= x: a plot top
+/// that reads well (3.7e-7 -> 5e-7); 1 when x is not > 0 or not finite (a
+/// plot of zeros). Labs 13 and 14 scale their GLU-difference and error plots
+/// with it.
+double plot_ceiling(double x);
+
+// ---- labels ------------------------------------------------------------------------
+
+/// A knot vector as text, each distinct knot once with "xm" for multiplicity
+/// m > 1, each preceded by a space: " 0x4 0.2 0.4 0.6 0.8 1x4" (%g numbers).
+std::string knot_vector_text(const std::vector<double>& U);
+
 }  // namespace gllab

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,43 @@ inline Image render_view(const std::string& lab, const ScratchDir& dir, const st
   const ProcessResult r = run_process(argv);
   EXPECT_EQ(r.exit_status, 0) << r.err;
   return read_png(out);
+}
+
+/// An 8-bit colour as the framebuffer holds it: round(255 * the lab's float).
+struct Rgb8 {
+  int r, g, b;
+};
+
+/// Within `tolerance` in every channel of one of `colours` (the rounding of a
+/// float colour to 8 bits may go either way).
+inline bool has_colour(const Image& im, int x, int y, const std::vector<Rgb8>& colours, int tolerance = 2) {
+  const std::uint8_t* p = im.pixel(x, y);
+  for (const Rgb8& c : colours)
+    if (std::abs(p[0] - c.r) <= tolerance && std::abs(p[1] - c.g) <= tolerance && std::abs(p[2] - c.b) <= tolerance)
+      return true;
+  return false;
+}
+
+/// A black image, white where `im` has one of the colours inside the pixel
+/// rectangle [x0, x1) x [y0, y1) (default: everywhere), so that what a lab drew
+/// in one colour can be compared with what it drew in another.
+inline Image colour_mask(const Image& im, const std::vector<Rgb8>& colours, int x0 = 0, int y0 = 0, int x1 = -1,
+                         int y1 = -1) {
+  Image mask(im.width, im.height);
+  for (int y = std::max(0, y0); y < (y1 < 0 ? im.height : std::min(y1, im.height)); ++y)
+    for (int x = std::max(0, x0); x < (x1 < 0 ? im.width : std::min(x1, im.width)); ++x) {
+      std::uint8_t* m = mask.pixel(x, y);
+      m[3] = 255;
+      if (has_colour(im, x, y, colours)) m[0] = m[1] = m[2] = 255;
+    }
+  return mask;
+}
+
+/// How many pixels of a mask are set.
+inline long long mask_count(const Image& mask) {
+  long long n = 0;
+  for (std::size_t k = 0; k < mask.rgba.size(); k += 4) n += mask.rgba[k] != 0;
+  return n;
 }
 
 /// Pixels that differ at all (channel threshold 0, no shift excused).
