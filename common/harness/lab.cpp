@@ -1,6 +1,10 @@
 // common/harness/lab.cpp — the State every lab draws from.
 #include "harness/lab.h"
 
+#include <cstdio>
+
+#include "io/spline_json.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -11,19 +15,17 @@ namespace gllab {
 
 namespace {
 
-std::string format_number(double v) {
-  std::ostringstream out;
-  out << v;  // shortest of %g: 0, 1, 0.25, 30
-  return out.str();
-}
+// The shortest text that reads back as the same double (0, 1, 0.25, 0.65):
+// what `p` prints must render the same picture again, bit for bit.
+std::string format_number(double v) { return io::shortest_text(v); }
+std::string format_coordinate(double v) { return io::shortest_text(v); }
 
-// Enough digits that a point on the grid (snap_to_grid) reads back as the
-// same double (12 significant digits: exact for |x| < 1e9 at 1 / 1000).
-std::string format_coordinate(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
+// A key's step lands on the nearest decimal of at most 12 significant
+// digits: 0.6 + 0.05 is 0.65 (printed "0.65"), not 0.6499999999999999.
+double decimal(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", v);
+  return std::strtod(text, nullptr);
 }
 
 std::string format_point(const spline::Vec3& p, int dimension) {
@@ -178,7 +180,7 @@ void State::toggle(const std::string& name) { set(name, flag(name) ? 0 : 1); }
 
 void State::step(const std::string& name, double delta) {
   const Param& p = find(name);
-  set(name, std::clamp(p.value + delta, p.lo, p.hi));
+  set(name, std::clamp(decimal(p.value + delta), p.lo, p.hi));
 }
 
 std::string State::as_arguments() const {

@@ -228,3 +228,23 @@ TEST(ModelFileLab, LabWithoutAModelSaysSo) {
 }
 
 }  // namespace
+
+namespace {
+
+// A key's step prints as the decimal a student expects and reads back as
+// the same double (lab.h: as_arguments reproduces the state exactly).
+TEST(State, SteppedParametersPrintShortAndReadBackExactly) {
+  gllab::Lab lab = curve_lab();
+  lab.params = {{"t", 0.6, 0, 1, ""}};
+  gllab::State s(lab.views, lab.params, lab.points);
+  for (int k = 0; k < 7; ++k) s.step("t", -0.05);  // 0.6 - 7 x 0.05 = 0.25
+  EXPECT_EQ(s.as_arguments(), "--view default --set t=0.25");
+  s.step("t", +0.05 / 3);                           // 0.26666666666666666...
+  const std::string args = s.as_arguments();
+  EXPECT_EQ(args, "--view default --set t=0.266666666667");
+  const gllab::State again =
+      gllab::make_state(lab, gllab::parse_options({"--set", args.substr(args.rfind(' ') + 1)}, gllab::Runner::kWindow));
+  EXPECT_EQ(again.get("t"), s.get("t"));  // bit for bit
+}
+
+}  // namespace
