@@ -299,9 +299,11 @@ void draw_mesh(const spline::Mesh& mesh) {
 }
 
 // glPolygonOffset(factor, units) for draw_surface: lines drawn on a surface
-// must win the depth test on llvmpipe and softpipe alike (a smaller offset let
-// softpipe hide line pixels that llvmpipe showed).
-constexpr GLfloat kSurfaceOffsetFactor = 1.f, kSurfaceOffsetUnits = 1.f;
+// must win the depth test on llvmpipe, softpipe and GLX alike. A flattened
+// iso-curve's chords sag below the curved surface; with (1, 1) one pixel of
+// lab 15's iso_lines_normals went to the surface under GLX and to the line
+// under OSMesa. (2, 4) clears it (and softpipe's line pixels).
+constexpr GLfloat kSurfaceOffsetFactor = 2.f, kSurfaceOffsetUnits = 4.f;
 
 void draw_surface(const spline::Mesh& mesh, Rgb colour) {
   draw_surface(mesh, std::vector<Rgb>(mesh.positions.size(), colour));

@@ -30,21 +30,26 @@ gllab::Image surface_only(const ScratchDir& dir, const std::string& view, std::v
 
 // The two views tessellate different evaluators (the Lagrange sum with
 // normals from central differences; the Bézier net with exact normals), so
-// their adaptive meshes split differently and silhouette pixels move: 23
-// pixels differ by more than 24, all excused by a one-pixel shift (measured).
-// That is the grading tolerance of reference_images/MANIFEST (channel 24,
-// shift 1): zero unexcused pixels allowed. A data point moved by 1% of the
-// 3-unit box (0.03) in one of them leaves 47 to 233 unexcused (measured).
+// their adaptive meshes split differently and silhouette pixels move: 26
+// pixels differ by more than 24, all but one excused by a one-pixel shift
+// (measured). The one: pixel (263, 197), a data point's dot on the far
+// silhouette, where the two meshes' edges differ by a hair and the dot shows
+// through one of them (draw_surface's polygon offset (2, 4) lets dots on the
+// surface win). Channel and shift are the grading tolerance of
+// reference_images/MANIFEST (24, 1); at most kSameSurface unexcused pixels.
+// A data point moved by 1% of the 3-unit box (0.03) in one of them leaves 47
+// to 233 unexcused (measured): more than ten times the bound.
 constexpr int kChannel = 24, kShift = 1;
+constexpr long long kSameSurface = 4;
 
 TEST(InterpolatingSurfacesLab, LagrangeAndInterpolatingBezierAreTheSameSurface) {
   ScratchDir dir("lab16");
   const gllab::Image bezier = surface_only(dir, "interpolating_bezier");
   const gllab::Comparison same = gllab::compare_images(bezier, surface_only(dir, "lagrange"), kChannel, kShift);
-  EXPECT_EQ(same.mismatched_pixels, 0) << same.differing_pixels << " differing, max " << same.max_delta;
+  EXPECT_LE(same.mismatched_pixels, kSameSurface) << same.differing_pixels << " differing, max " << same.max_delta;
   for (const char* moved : {"C[4]=-0.5,0,0.83", "C[7]=0.5,0,0.43"}) {  // defaults z 0.8 and 0.4
     const gllab::Comparison c = gllab::compare_images(bezier, surface_only(dir, "lagrange", {moved}), kChannel, kShift);
-    EXPECT_GT(c.mismatched_pixels, 0) << moved;
+    EXPECT_GT(c.mismatched_pixels, 10 * kSameSurface) << moved;
   }
 }
 
