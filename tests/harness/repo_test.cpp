@@ -76,3 +76,34 @@ TEST(Linking, NoProgramLinksBothLibGlAndOsmesa) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 6: every lab's keys are listed in its help overlay (frame.cpp lists
+// Lab::keys, so that holds by construction) and in its README. The keys come
+// from the window program's --help ("keys:" section, after the runner's own);
+// each must appear in labs/<lab>/README.md in backquotes, as `k` or as part of
+// a pair like `k`/`K`.
+TEST(Repository, EveryLabKeyIsInTheLabsReadme) {
+  for (const std::string& lab : lab_ids()) {
+    const gllab::ProcessResult help = run_process({(kBinDir / lab).string(), "--help"});
+    ASSERT_EQ(help.exit_status, 0) << lab << ": " << help.err;
+    const std::string readme = read_text(kSourceDir / "labs" / lab / "README.md");
+    const auto keys_at = help.out.find("\nkeys:\n");
+    ASSERT_NE(keys_at, std::string::npos) << lab;
+    std::istringstream lines(help.out.substr(keys_at + 7));
+    int count = 0;
+    for (std::string line; std::getline(lines, line) && !line.empty();) {
+      // "  k       what": the lab's keys follow the runner's (v / V, h, p, Ctrl+S, Esc).
+      if (line.size() < 4 || line[3] != ' ' || line.compare(0, 2, "  ") != 0) continue;
+      const char key = line[2];
+      if (std::string("hvVp").find(key) != std::string::npos) continue;
+      ++count;
+      EXPECT_NE(readme.find(std::string("`") + key + "`"), std::string::npos)
+          << lab << ": key '" << key << "' (" << line.substr(4) << ") is not in its README";
+    }
+    EXPECT_GT(count, 0) << lab << " lists no keys of its own";
+  }
+}
+
+}  // namespace
