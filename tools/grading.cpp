@@ -48,6 +48,30 @@ class BuildSource : public Source {
     }
   }
 
+  // <lab>_headless --views a,b,c --out -: one PAM per view, in order, until
+  // the first failure; the views after it are rendered one by one for their
+  // own reasons.
+  std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
+    if (views.size() < 2) return Source::obtain_batch(views);
+    const fs::path program = renderer(views.front().lab);
+    if (program.empty()) return Source::obtain_batch(views);
+    std::string list;
+    for (const ViewId& v : views) list += (list.empty() ? "" : ",") + v.view;
+    const ProcessResult r =
+        run_process({program.string(), "--views", list, "--out", "-"}, env_, timeout_ * static_cast<double>(views.size()));
+    std::vector<Obtained> out;
+    std::size_t at = 0;
+    while (r.started && !r.timed_out && out.size() < views.size() && at < r.out.size()) {
+      try {
+        out.push_back({decode_pam_at(r.out, at, views[out.size()].lab + "_headless"), ""});
+      } catch (const ImageError&) {
+        break;  // a torn or foreign stream: the rest one by one
+      }
+    }
+    for (std::size_t i = out.size(); i < views.size(); ++i) out.push_back(Source::obtain_batch({views[i]}).front());
+    return out;
+  }
+
   std::string describe() const override { return dir_.string(); }
 
  private:
@@ -80,6 +104,20 @@ class ImageSource : public Source {
 };
 
 }  // namespace
+
+std::vector<Obtained> Source::obtain_batch(const std::vector<ViewId>& views) const {
+  std::vector<Obtained> out;
+  for (const ViewId& v : views) {
+    try {
+      out.push_back({obtain(v), ""});
+    } catch (const SubmissionError& e) {
+      out.push_back({std::nullopt, e.what()});
+    } catch (const std::exception& e) {
+      out.push_back({std::nullopt, std::string("cannot grade: ") + e.what()});
+    }
+  }
+  return out;
+}
 
 Manifest read_manifest(const fs::path& refs) {
   const fs::path path = refs / "MANIFEST";
@@ -168,13 +206,19 @@ bool looks_like_build(const fs::path& dir) {
   return false;
 }
 
-ViewResult grade_view(const Source& source, const ViewId& id, const Image& reference, const Tolerance& tolerance,
-                      bool keep_image) {
-  const auto start = std::chrono::steady_clock::now();
+namespace {
+
+// The verdict on one render (or on its absence).
+ViewResult judge(const ViewId& id, Obtained obtained, const Image& reference, const Tolerance& tolerance,
+                 bool keep_image) {
   ViewResult r;
   r.id = id;
+  if (!obtained.image) {
+    r.reason = obtained.error;
+    return r;
+  }
   try {
-    Image image = source.obtain(id);
+    Image& image = *obtained.image;
     if (image.width != reference.width || image.height != reference.height) {
       r.reason = "render is " + std::to_string(image.width) + "x" + std::to_string(image.height) + ", the reference " +
                  std::to_string(reference.width) + "x" + std::to_string(reference.height);
@@ -184,11 +228,18 @@ ViewResult grade_view(const Source& source, const ViewId& id, const Image& refer
       if (!r.passed) r.reason = "differs beyond tolerance";
     }
     if (keep_image || !r.passed) r.submission = std::move(image);
-  } catch (const SubmissionError& e) {
-    r.reason = e.what();
   } catch (const std::exception& e) {
     r.reason = std::string("cannot grade: ") + e.what();
   }
+  return r;
+}
+
+}  // namespace
+
+ViewResult grade_view(const Source& source, const ViewId& id, const Image& reference, const Tolerance& tolerance,
+                      bool keep_image) {
+  const auto start = std::chrono::steady_clock::now();
+  ViewResult r = judge(id, source.obtain_batch({id}).front(), reference, tolerance, keep_image);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -214,27 +265,46 @@ Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::pa
   Grade g;
   g.submission = source.describe();
   g.views.resize(views.size());
+  // Work items: the views of one lab (indices into views), in order.
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    if (groups.empty() || views[groups.back().front()].lab != views[i].lab) groups.emplace_back();
+    groups.back().push_back(i);
+  }
   std::atomic<std::size_t> next{0};
   std::mutex report;
   int done = 0;
   auto worker = [&] {
-    for (std::size_t i = next++; i < views.size(); i = next++) {
+    for (std::size_t k = next++; k < groups.size(); k = next++) {
+      const std::vector<std::size_t>& group = groups[k];
+      std::vector<ViewId> batch;
+      for (std::size_t i : group) batch.push_back(views[i]);
       if (progress) {
         std::lock_guard<std::mutex> lock(report);
-        progress({done, static_cast<int>(views.size()), &views[i], nullptr});
+        progress({done, static_cast<int>(views.size()), &batch.front(), nullptr});
       }
-      ViewResult r;
-      try {
-        const Image reference = read_png((refs / (views[i].name() + ".png")).string());
-        r = grade_view(source, views[i], reference, tolerance, keep_images);
-      } catch (const std::exception& e) {
-        r.id = views[i];
-        r.reason = std::string("cannot read the reference: ") + e.what();
+      const auto start = std::chrono::steady_clock::now();
+      std::vector<Obtained> renders = source.obtain_batch(batch);
+      const double each = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                          static_cast<double>(batch.size());
+      for (std::size_t b = 0; b < batch.size(); ++b) {
+        const std::size_t i = group[b];
+        ViewResult r;
+        try {
+          const Image reference = read_png((refs / (views[i].name() + ".png")).string());
+          r = judge(views[i], std::move(renders[b]), reference, tolerance, keep_images);
+          r.seconds = each;
+          // From a batch, a failure is confirmed by a render of its own.
+          if (!r.passed && r.comparison && batch.size() > 1) r = grade_view(source, views[i], reference, tolerance, keep_images);
+        } catch (const std::exception& e) {
+          r.id = views[i];
+          r.reason = std::string("cannot read the reference: ") + e.what();
+        }
+        g.views[i] = std::move(r);
+        std::lock_guard<std::mutex> lock(report);
+        ++done;
+        if (progress) progress({done, static_cast<int>(views.size()), &views[i], &g.views[i]});
       }
-      g.views[i] = std::move(r);
-      std::lock_guard<std::mutex> lock(report);
-      ++done;
-      if (progress) progress({done, static_cast<int>(views.size()), &views[i], &g.views[i]});
     }
   };
   std::vector<std::thread> threads;

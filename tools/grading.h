@@ -61,12 +61,22 @@ std::vector<ViewId> select_views(const std::vector<ViewId>& all, const std::vect
                                  const std::vector<std::string>& views);
 
 /// Where a submission's renders come from.
+/// One render, or why there is none.
+struct Obtained {
+  std::optional<Image> image;
+  std::string error;  // set when image is empty
+};
+
 class Source {
  public:
   virtual ~Source() = default;
   /// The submission's image of the view. Throws SubmissionError with the
   /// reason when there is none (no renderer, crash, GL error, timeout, ...).
   virtual Image obtain(const ViewId& id) const = 0;
+  /// Several views of ONE lab at once, in order. The default asks obtain()
+  /// for each; a build renders them in one process (much faster: one
+  /// program start and one llvmpipe shader cache for the lab).
+  virtual std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const;
   /// What to call this submission in messages and reports.
   virtual std::string describe() const = 0;
 };
@@ -127,7 +137,10 @@ struct ProgressEvent {
 using Progress = std::function<void(const ProgressEvent&)>;
 
 /// Grades the views with `jobs` threads (>= 1), in the views' order in the
-/// result. References are read once, here.
+/// result. References are read once, here. A lab's views are obtained as
+/// one batch; a view that fails from the batch is rendered again on its own
+/// and graded from that render, so a verdict never depends on which views
+/// a process drew before (references are rendered one view per process).
 Grade grade(const Source& source, const std::vector<ViewId>& views, const std::filesystem::path& refs,
             const Tolerance& tolerance, int jobs, bool keep_images, const Progress& progress = nullptr);
 

@@ -18,6 +18,7 @@ enum class Runner { kWindow, kHeadless };
 
 struct Options {
   std::string view;                 // empty: the lab's first view
+  std::vector<std::string> views;   // --views a,b,c (headless, with --out -): several in one run
   int width = 512, height = 512;    // --size WxH
   std::string out;                  // --out FILE (headless), --capture FILE (window)
   std::string capture_views;        // --capture-views DIR (window): every view to DIR/<lab>__<view>.png

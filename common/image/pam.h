@@ -21,4 +21,9 @@ std::string encode_pam(const Image& img);
 /// Only DEPTH 4, MAXVAL 255, TUPLTYPE RGB_ALPHA is accepted.
 Image decode_pam(const std::string& bytes, const std::string& source);
 
+/// One image of a stream of PAMs (a headless program's --views ... --out -),
+/// starting at `at`, which moves past it. Throws ImageError as decode_pam,
+/// "truncated" when the stream ends inside the image.
+Image decode_pam_at(const std::string& bytes, std::size_t& at, const std::string& source);
+
 }  // namespace gllab

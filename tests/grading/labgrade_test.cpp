@@ -137,6 +137,35 @@ TEST(Labgrade, GlErrorCrashHangAndMissingRendererAreFailingRowsWithTheReason) {
   EXPECT_NE(r.out.find("4 views: 0 passed, 4 failed; score 0.0%"), std::string::npos) << r.out;
 }
 
+// A build renders a lab's views in one run (--views a,b,c --out -). A view
+// that fails from that run is rendered again on its own and graded from that
+// render, so the verdict is the one a run per view (as the references were
+// made) gives: here the batch answers every view with the default view's
+// picture, and the single runs are right, so every view passes.
+TEST(Labgrade, AViewThatFailsInABatchIsGradedFromItsOwnRender) {
+  ScratchDir build("build");
+  const std::string real = (kBinDir / (kLab + "_headless")).string();
+  write_fake_renderer(build / (kLab + "_headless"),
+                      "if [ \"$1\" = --views ]; then exec " + real + " --views default,default,default,default --out -; fi\n"
+                      "exec " + real + " \"$@\"");
+  const gllab::ProcessResult r = grade({"--build", build.path().string(), "--labs", "01", "--quiet"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("4 views: 4 passed"), std::string::npos) << r.out;
+}
+
+// A batch run that stops after its first frame: the views it did not render
+// are rendered one by one, each graded on its own.
+TEST(Labgrade, ABatchThatStopsEarlyGradesTheRestOneByOne) {
+  ScratchDir build("build");
+  const std::string real = (kBinDir / (kLab + "_headless")).string();
+  write_fake_renderer(build / (kLab + "_headless"),
+                      "if [ \"$1\" = --views ]; then " + real + " --view default --out -; exit 3; fi\n"
+                      "exec " + real + " \"$@\"");
+  const gllab::ProcessResult r = grade({"--build", build.path().string(), "--labs", "01", "--quiet"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("4 views: 4 passed"), std::string::npos) << r.out;
+}
+
 TEST(Labgrade, ImageFolderIsGradedAndAWrongImageFails) {
   ScratchDir images("images");
   for (const std::string v : {"default", "invalid_polygons", "vertex_order"})

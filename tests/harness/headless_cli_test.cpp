@@ -57,6 +57,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--set", "spin", "--out", "OUT"}, kUsageStatus, "'spin'"},
         BadInput{{"--frobnicate", "--out", "OUT"}, kUsageStatus, "'--frobnicate'"},
         BadInput{{"--view"}, kUsageStatus, "--view"},
+        BadInput{{"--views", "default,wireframe", "--out", "OUT"}, kUsageStatus, "--views goes with --out -"},
+        BadInput{{"--views", "default,nosuch", "--out", "-"}, kUsageStatus, "'nosuch'"},
+        BadInput{{"--views", ",", "--out", "-"}, kUsageStatus, "--views needs view names"},
         BadInput{{"--view", "default"}, kUsageStatus, "--out"},
         BadInput{{"--out", "/nonexistent-dir/x.png"}, kFailureStatus, "/nonexistent-dir/x.png"},
         BadInput{{"--out", "/proc/gllab.png"}, kFailureStatus, "/proc/gllab.png"}));
