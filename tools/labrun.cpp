@@ -7,6 +7,10 @@
 //   labrun --update-references     render into reference_images/ + MANIFEST
 //   labrun --check-references      every view has a reference, no stray ones
 //
+// An error view (harness/lab.h View::expect_error; --list-views prints
+// "name expect_error") has no reference image: it passes when the render
+// exits 1 with an error line, and --update-references skips it.
+//
 // Exit status: 0 all pass, 1 some view failed, 2 usage or input error.
 #include <unistd.h>
 
@@ -109,7 +113,9 @@ Settings parse(int argc, char** argv) {
           "Renders every view of every lab with build/bin/<lab>_headless, compares each\n"
           "with reference_images/<lab>__<view>.png using the tolerance in\n"
           "reference_images/MANIFEST, prints a table and writes the renders and diff\n"
-          "heat maps to --out (default out/): <lab>__<view>.png, <lab>__<view>.diff.png.\n\n"
+          "heat maps to --out (default out/): <lab>__<view>.png, <lab>__<view>.diff.png.\n"
+          "An error view (--list-views: 'name expect_error') has no reference and passes\n"
+          "when the render exits 1 with an error line.\n\n"
           "  --update-references  render into the reference folder and rewrite MANIFEST\n"
           "  --check-references   fail when a view has no reference or a reference no view\n"
           "  --env NAME=VALUE     set for the renderer, e.g. GALLIUM_DRIVER=softpipe\n\n"
@@ -123,13 +129,25 @@ Settings parse(int argc, char** argv) {
 
 fs::path renderer_of(const Settings& s, const std::string& lab) { return s.bin / (lab + "_headless"); }
 
-std::vector<std::string> views_of(const Settings& s, const std::string& lab) {
+// One line of --list-views: "name", or "name expect_error" for an error view
+// (harness/lab.h View::expect_error: headless it exits 1, it has no reference).
+struct ViewEntry {
+  std::string name;
+  bool expect_error = false;
+};
+
+std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
   const gllab::ProcessResult r = gllab::run_process({renderer_of(s, lab).string(), "--list-views"});
   if (!r.started || r.exit_status != 0)
     throw UsageError(lab + ": cannot list views: " + gllab::first_line(r.err));
-  std::vector<std::string> views;
-  for (const std::string& v : split(r.out, '\n'))
-    if (s.views.empty() || s.views.count(v)) views.push_back(v);
+  std::vector<ViewEntry> views;
+  for (const std::string& line : split(r.out, '\n')) {
+    const std::vector<std::string> words = split(line, ' ');
+    if (words.empty()) continue;
+    if (words.size() > 2 || (words.size() == 2 && words[1] != "expect_error"))
+      throw UsageError(lab + ": --list-views printed '" + line + "' (expected a name, optionally 'expect_error')");
+    if (s.views.empty() || s.views.count(words[0])) views.push_back({words[0], words.size() == 2});
+  }
   return views;
 }
 
@@ -166,8 +184,15 @@ int check_references(const Settings& s) {
   std::set<std::string> expected;
   int problems = 0;
   for (const std::string& lab : s.labs)
-    for (const std::string& view : views_of(s, lab)) {
-      const std::string name = reference_name(lab, view);
+    for (const ViewEntry& view : views_of(s, lab)) {
+      const std::string name = reference_name(lab, view.name);
+      if (view.expect_error) {
+        if (fs::exists(s.refs / name)) {
+          std::printf("reference for an error view (it exits 1, it has none): %s\n", (s.refs / name).c_str());
+          ++problems;
+        }
+        continue;
+      }
       expected.insert(name);
       if (!fs::exists(s.refs / name)) {
         std::printf("missing reference: %s\n", (s.refs / name).c_str());
@@ -202,7 +227,12 @@ int update_references(const Settings& s) {
       if (info.exit_status != 0) throw UsageError(lab + ": --info failed: " + gllab::first_line(info.err));
       renderer_info = info.out;
     }
-    for (const std::string& view : views_of(s, lab)) {
+    for (const ViewEntry& entry : views_of(s, lab)) {
+      const std::string& view = entry.name;
+      if (entry.expect_error) {
+        std::printf("skipped %s %s: an error view has no reference\n", lab.c_str(), view.c_str());
+        continue;
+      }
       const fs::path target = s.refs / reference_name(lab, view);
       const gllab::ProcessResult r = gllab::run_process(
           {renderer_of(s, lab).string(), "--view", view, "--out", target.string()}, s.env);
@@ -239,15 +269,22 @@ int compare_all(const Settings& s) {
               "max delta");
   int passed = 0, failed = 0;
   for (const std::string& lab : s.labs) {
-    for (const std::string& view : views_of(s, lab)) {
+    for (const ViewEntry& entry : views_of(s, lab)) {
+      const std::string& view = entry.name;
       const std::string name = reference_name(lab, view);
       const fs::path render = s.out / name;
       const fs::path heat = s.out / (lab + "__" + view + ".diff.png");
-      std::string failure;
+      std::string failure, note;
       gllab::Comparison c;
       const gllab::ProcessResult r = gllab::run_process(
           {renderer_of(s, lab).string(), "--view", view, "--out", render.string()}, s.env);
-      if (r.exit_status != 0) {
+      if (entry.expect_error) {
+        // Passes when the renderer reports its frame error: exit 1, one line.
+        const std::string line = gllab::first_line(r.err);
+        if (r.exit_status == 1 && !line.empty()) note = "error view, exits 1 as expected: " + line;
+        else if (r.exit_status == 0) failure = "error view rendered without an error (expected exit 1)";
+        else failure = "error view: exit status " + std::to_string(r.exit_status) + " (expected 1): " + line;
+      } else if (r.exit_status != 0) {
         failure = r.started ? gllab::first_line(r.err) : r.err;
         if (failure.empty()) failure = "renderer exited with status " + std::to_string(r.exit_status);
       } else if (!fs::exists(s.refs / name)) {
@@ -270,6 +307,7 @@ int compare_all(const Settings& s) {
                   compared ? std::to_string(c.differing_pixels).c_str() : "-", compared ? unexcused : "-",
                   compared ? std::to_string(c.max_delta).c_str() : "-");
       if (!failure.empty()) std::printf("    %s\n", failure.c_str());
+      if (!note.empty()) std::printf("    %s\n", note.c_str());
       (failure.empty() ? passed : failed)++;
     }
   }

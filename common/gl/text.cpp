@@ -155,7 +155,15 @@ struct PixelSpace {
   int height = 0;
 };
 
+// --print-text (text.h): the strings drawn while recording is on.
+bool g_recording = false;
+std::vector<std::string>& recorded() {
+  static std::vector<std::string> lines;
+  return lines;
+}
+
 void bitmap_text(int x, int y_top, int viewport_height, const std::string& utf8, Rgb c) {
+  if (g_recording) recorded().push_back(utf8);
   const Font* f = font();
   if (!f) return;
   glColor3f(c.r, c.g, c.b);
@@ -171,6 +179,14 @@ void bitmap_text(int x, int y_top, int viewport_height, const std::string& utf8,
 }
 
 }  // namespace
+
+void record_text(bool on) { g_recording = on; }
+
+std::vector<std::string> take_recorded_text() {
+  std::vector<std::string> lines;
+  lines.swap(recorded());
+  return lines;
+}
 
 int text_width(const std::string& utf8) {
   return kGlyphWidth * static_cast<int>(code_points(utf8).size());

@@ -30,4 +30,11 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb co
 /// Width in pixels of the text drawn by draw_text (one glyph per code point).
 int text_width(const std::string& utf8);
 
+/// While on, every string draw_text and draw_text_panel draw is also kept, in
+/// order; take_recorded_text() hands them over and starts again. The headless
+/// runner's --print-text prints them, so a test can read the numbers a view
+/// shows on screen. Off by default (the window never records).
+void record_text(bool on);
+std::vector<std::string> take_recorded_text();
+
 }  // namespace gllab

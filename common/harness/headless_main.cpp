@@ -10,6 +10,7 @@
 
 #include "gl/check.h"
 #include "gl/gl.h"
+#include "gl/text.h"
 #include "harness/frame.h"
 #include "harness/lab.h"
 #include "harness/offscreen.h"
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
         return 0;
       }
       if (options.list_views) {
-        for (const gllab::View& v : lab.views) std::printf("%s\n", v.name.c_str());
+        std::fputs(gllab::list_views_text(lab).c_str(), stdout);
         return 0;
       }
       parsed = gllab::make_state(lab, options);
@@ -53,7 +54,9 @@ int main(int argc, char** argv) {
     }
     if (lab.init) lab.init();
     gllab::check_gl_errors("in init()");
+    gllab::record_text(options.print_text);
     gllab::draw_frame(lab, state);
+    gllab::record_text(false);
     glFinish();
     gllab::check_gl_errors("after the frame");
     const std::vector<std::string> errors = gllab::take_frame_errors();
@@ -69,6 +72,7 @@ int main(int argc, char** argv) {
       if (!late.empty()) return fail(1, late.front());
     }
     gllab::write_png(options.out, image);
+    for (const std::string& line : gllab::take_recorded_text()) std::printf("%s\n", line.c_str());
     return 0;
   } catch (const std::exception& e) {
     return fail(1, e.what());

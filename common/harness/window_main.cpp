@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (options.list_views) {
-      for (const gllab::View& v : window.lab.views) std::printf("%s\n", v.name.c_str());
+      std::fputs(gllab::list_views_text(window.lab).c_str(), stdout);
       return 0;
     }
     window.state = gllab::make_state(window.lab, options);

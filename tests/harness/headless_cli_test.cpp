@@ -69,6 +69,21 @@ TEST(HeadlessCli, ListViewsPrintsOneViewPerLine) {
     EXPECT_NE(r.out.find(view), std::string::npos) << r.out;
 }
 
+// --print-text prints the text the frame drew, one string per line, after
+// writing the PNG: lab 01's default view labels its primitives by their GL
+// names (labs/01_immediate_mode). Without it a successful run prints nothing.
+TEST(HeadlessCli, PrintTextPrintsTheLabelsTheFrameDrew) {
+  ScratchDir dir("print_text");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r = run_process({headless(kLab), "--print-text", "--out", out.string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  for (const char* label : {"GL_POLYGON\n", "GL_TRIANGLE_STRIP\n"})
+    EXPECT_NE(r.out.find(label), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  const gllab::ProcessResult quiet = run_process({headless(kLab), "--out", out.string()});
+  EXPECT_EQ(quiet.out, "");
+}
+
 TEST(HeadlessCli, HelpNamesEveryOption) {
   const gllab::ProcessResult r = run_process({headless(kLab), "--help"});
   EXPECT_EQ(r.exit_status, 0);

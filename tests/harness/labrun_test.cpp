@@ -1,6 +1,7 @@
 // tests/harness/labrun_test.cpp — the comparison behind `make run` reports
 // a missing, corrupt or wrong-sized reference as a failing row with its
-// reason (one line) and exits 1; bad input exits 2 with one line.
+// reason (one line) and exits 1; bad input exits 2 with one line; an error
+// view passes only when its render exits 1.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -99,6 +100,55 @@ TEST(Labrun, CrashingRendererIsAFailingRowNotASkip) {
   // 128 + SIGSEGV (11): how the shell reports a process killed by a signal.
   EXPECT_NE(row_of(r.out, "default").find("exited with status 139"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("1 views: 0 passed, 1 failed"), std::string::npos) << r.out;
+}
+
+// An error view (harness/lab.h View::expect_error), listed as
+// "name expect_error": a stand-in renderer with only that view, which
+// exits with `status` after printing one error line.
+void write_fake_error_view(const fs::path& path, int status) {
+  std::ofstream(path) << "#!/bin/sh\ncase \"$1\" in --list-views) echo 'broken expect_error' ;; "
+                      << "*) echo \"x: view 'broken': GLU NURBS error 28\" >&2; exit " << status << " ;; esac\n";
+  fs::permissions(path, fs::perms::owner_all);
+}
+
+std::string error_view_row(const std::string& out) {
+  const auto at = out.find(kLab + "      broken");
+  return at == std::string::npos ? "" : out.substr(at, out.find('\n', out.find('\n', at) + 1) - at);
+}
+
+TEST(Labrun, ErrorViewThatExitsOnePassesAndShowsTheError) {
+  ScratchDir bin("bin"), out("out");
+  write_fake_error_view(bin / (kLab + "_headless"), 1);
+  const gllab::ProcessResult r = run_process(
+      {labrun(), "--labs", "01", "--bin", bin.path().string(), "--out", out.path().string()});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(error_view_row(r.out).find("pass"), std::string::npos) << r.out;
+  EXPECT_NE(error_view_row(r.out).find("exits 1 as expected: x: view 'broken': GLU NURBS error 28"),
+            std::string::npos) << r.out;
+}
+
+TEST(Labrun, ErrorViewThatRendersOrCrashesFails) {
+  for (int status : {0, 2}) {
+    ScratchDir bin("bin"), out("out");
+    write_fake_error_view(bin / (kLab + "_headless"), status);
+    const gllab::ProcessResult r = run_process(
+        {labrun(), "--labs", "01", "--bin", bin.path().string(), "--out", out.path().string()});
+    EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+    EXPECT_NE(error_view_row(r.out).find(status == 0 ? "rendered without an error" : "exit status 2 (expected 1)"),
+              std::string::npos) << r.out;
+  }
+}
+
+TEST(Labrun, ErrorViewNeedsNoReferenceAndMayNotHaveOne) {
+  ScratchDir bin("bin"), refs("refs");
+  write_fake_error_view(bin / (kLab + "_headless"), 1);
+  const std::vector<std::string> check = {labrun(), "--check-references", "--labs", "01", "--bin",
+                                          bin.path().string(), "--refs", refs.path().string()};
+  EXPECT_EQ(run_process(check).exit_status, 0);
+  gllab::write_png((refs / (kLab + "__broken.png")).string(), gllab::Image(16, 16));
+  const gllab::ProcessResult r = run_process(check);
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
+  EXPECT_NE(r.out.find("reference for an error view"), std::string::npos) << r.out;
 }
 
 TEST(Labrun, MissingRendererIsAUsageErrorNamingIt) {
