@@ -16,9 +16,12 @@
 //    strips for GLU_OUTLINE_PATCH).
 #include "gl/glu_nurbs.h"
 
+#include <dlfcn.h>
+
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <utility>
 
 #include "harness/lab.h"
@@ -103,6 +106,13 @@ void GLAPIENTRY on_glu_error(GLenum code) {
     // Every GLU call of this file runs inside a CallScope; this would be a bug here.
     report_frame_error(make_error("GLU NURBS call outside gllab::GluNurbs", code).message);
   }
+}
+
+// GLU error n that GLU raised with longjmp and never reported (see
+// __longjmp_chk at the end of this file): recorded for the call in progress.
+void record_lost_error(int value) {
+  if (t_call && value >= 1 && value <= static_cast<int>(GLU_NURBS_ERROR37 - GLU_NURBS_ERROR1) + 1)
+    t_call->errors.push_back(make_error(t_call->what, GLU_NURBS_ERROR1 + static_cast<GLenum>(value) - 1));
 }
 
 class CallScope {
@@ -695,3 +705,31 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
 }
 
 }  // namespace gllab
+
+// ---- errors GLU finds and then loses -------------------------------------------
+// GLU 9.0.2 checks trim loops while it tessellates (libnurbs, Subdivider::
+// drawSurfaces and the ccwTurn tests): a trim curve that does not meet the
+// next piece gives NURBS error 31, a loop running the wrong way (a clockwise
+// outer loop) or two loops that cross give error 28. It leaves the
+// tessellation with longjmp, to a setjmp GLU made inside its own
+// out-of-line mysetjmp() (libnurbs/internals/mysetjmp.h), a function that has
+// already returned. The jump lands in that dead frame, whose return address
+// the tessellation has overwritten with its own, and comes back as if the
+// tessellation had finished: the error callback is never called and the
+// surface silently disappears (measured with gdb, libglu1-mesa 9.0.2-1.1: the
+// longjmp carries 28 or 31, no callback follows, no vertex is drawn).
+// GLU jumps through glibc's fortified __longjmp_chk (nm -D libGLU.so.1 lists
+// it, and no other longjmp). The definition below, linked into every program
+// that uses GluNurbs, is found before glibc's; during a GluNurbs call it
+// records the code as the call's error, exactly as the callback would have,
+// and then jumps as glibc would (the next definition, dlsym RTLD_NEXT: glibc,
+// or the AddressSanitizer's). Outside a call it only passes the jump on.
+// The parameter is glibc's struct __jmp_buf_tag[1], passed on untouched.
+extern "C" [[noreturn]] void __longjmp_chk(void* env, int value) {
+  using LongJump = void (*)(void*, int);
+  static const auto next = reinterpret_cast<LongJump>(dlsym(RTLD_NEXT, "__longjmp_chk"));
+  gllab::record_lost_error(value);
+  if (!next) std::abort();  // no glibc: cannot happen in a program that links GLU
+  next(env, value);
+  std::abort();  // __longjmp_chk does not return
+}

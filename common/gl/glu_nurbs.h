@@ -21,6 +21,12 @@
 //    "gluNurbsSurface (trimmed hill): GLU NURBS error 28 (intersecting or misoriented trim curves)".
 //    The window shows it, the headless runner exits 1.
 //
+// GLU 9.0.2 finds a misoriented or crossing trim loop (NURBS error 28) and an
+// unconnected trim curve (error 31) but loses both on the way to its error
+// callback (a longjmp into a dead frame; glu_nurbs.cpp, "errors GLU finds and
+// then loses"). The wrapper catches that longjmp and reports them like any
+// other GLU error.
+//
 // GLU passes its error callback no user data (GLU 9.0.2 has no
 // GLU_NURBS_ERROR_DATA: measured, the enum is not in glu.h and a callback
 // registered under the next free number is never called). GLU calls it

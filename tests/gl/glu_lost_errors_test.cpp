@@ -1,0 +1,92 @@
+// tests/gl/glu_lost_errors_test.cpp — GLU 9.0.2 finds a misoriented or
+// crossing trim loop (NURBS error 28) but loses the error on the way to its
+// callback; gllab::GluNurbs catches GLU's longjmp and reports it
+// (common/gl/glu_nurbs.cpp, "errors GLU finds and then loses").
+//
+// Capture mode with GLU_DOMAIN_DISTANCE needs no GL context (glu_nurbs.h).
+// The surface is the bilinear-spaced bicubic plane x = 3u, y = 3v, z = 0.
+#include <gtest/gtest.h>
+
+#include <csetjmp>
+#include <string>
+#include <vector>
+
+#include "gl/glu_nurbs.h"
+#include "harness/lab.h"
+
+namespace {
+
+using gllab::spline::BsplineSurface;
+using gllab::spline::TrimLoop;
+using gllab::spline::Vec2;
+
+// glu.h: GLU_NURBS_ERROR28 and gluErrorString's text for it.
+constexpr int kMisoriented = 28;
+const std::string kMisorientedText = "GLU NURBS error 28 (intersecting or misoriented trim curves)";
+
+BsplineSurface plane_with(std::vector<TrimLoop> trims) {
+  BsplineSurface s;
+  s.p = s.q = 3;
+  s.U = s.V = {0, 0, 0, 0, 1, 1, 1, 1};
+  s.nu = s.nv = 4;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) s.P.push_back({double(i), double(j), 0});
+  s.trims = std::move(trims);
+  return s;
+}
+
+// A closed polyline loop through the points (the first repeated at the end).
+TrimLoop loop(std::vector<Vec2> p) {
+  p.push_back(p.front());
+  return TrimLoop{{{p, std::nullopt}}};
+}
+
+gllab::SurfaceCapture capture(const BsplineSurface& s) {
+  gllab::GluNurbsProperties p;
+  p.sampling_method = GLU_DOMAIN_DISTANCE;
+  p.u_step = p.v_step = 10;
+  gllab::GluNurbs glu(p);
+  gllab::SurfaceCapture c = glu.capture_surface(s, "plane");
+  gllab::take_frame_errors();  // reported too; the capture's list is checked
+  return c;
+}
+
+TEST(GluLostErrors, ClockwiseOuterLoopIsError28AndNothingIsDrawn) {
+  const gllab::SurfaceCapture c = capture(plane_with({loop({{0.1, 0.1}, {0.1, 0.9}, {0.9, 0.9}, {0.9, 0.1}})}));
+  ASSERT_EQ(c.errors.size(), 1u);
+  EXPECT_EQ(c.errors[0].nurbs_error, kMisoriented);
+  EXPECT_EQ(c.errors[0].message, "gluNurbsSurface (plane): " + kMisorientedText);
+  EXPECT_EQ(c.mesh.positions.size(), 0u);
+}
+
+TEST(GluLostErrors, CrossingHolesAreError28) {
+  const gllab::SurfaceCapture c =
+      capture(plane_with({loop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), loop({{0.2, 0.2}, {0.2, 0.6}, {0.6, 0.6}, {0.6, 0.2}}),
+                          loop({{0.4, 0.4}, {0.4, 0.8}, {0.8, 0.8}, {0.8, 0.4}})}));
+  ASSERT_EQ(c.errors.size(), 1u);
+  EXPECT_EQ(c.errors[0].nurbs_error, kMisoriented);
+}
+
+// The negative check: the same loop counter-clockwise is a valid outer loop,
+// GLU tessellates it and no error is invented (measured: 250 vertices).
+TEST(GluLostErrors, CounterClockwiseOuterLoopRaisesNothing) {
+  const gllab::SurfaceCapture c = capture(plane_with({loop({{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}})}));
+  EXPECT_TRUE(c.ok()) << c.errors.front().message;
+  EXPECT_GT(c.mesh.triangles.size(), 0u);
+}
+
+// A jump through __longjmp_chk outside any GluNurbs call (here the test's
+// own, the call a fortified longjmp makes) lands where glibc's would and
+// records nothing. (The wrapper's definition, as glu_nurbs.cpp declares it.)
+extern "C" [[noreturn]] void __longjmp_chk(void* env, int value);
+
+TEST(GluLostErrors, OtherJumpsPassThroughUntouched) {
+  std::jmp_buf where;
+  volatile int landed = 0;
+  if (const int value = setjmp(where); value == 0) __longjmp_chk(where, kMisoriented);
+  else landed = value;
+  EXPECT_EQ(landed, kMisoriented);
+  EXPECT_TRUE(gllab::take_frame_errors().empty());
+}
+
+}  // namespace
