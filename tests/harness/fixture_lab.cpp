@@ -7,9 +7,11 @@
 //   mistake=1  wrong colour: one shape's glColor has red and blue swapped
 //   mistake=2  missing primitive: one triangle of the fan is not drawn
 //   mistake=3  moved vertex: one vertex off by 1% of the 512-pixel frame
-// and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose.
+// and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose;
+// `throw_after_text=1` throws from display() after its text is drawn.
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 
 #include "gl/gl.h"
 #include "gl/scene.h"
@@ -66,6 +68,7 @@ void display(const gllab::State& s) {
   gllab::draw_label(0, -2.6, 0, "GL_QUAD_STRIP and GL_TRIANGLES", {1.f, 1.f, 1.f});
 
   if (s.flag("gl_error")) glEnable(GL_TRUE);  // GL_TRUE is no capability: GL_INVALID_ENUM
+  if (s.flag("throw_after_text")) throw std::invalid_argument("display() gave up after its label");
 }
 
 }  // namespace
@@ -75,7 +78,8 @@ gllab::Lab gllab::define_lab() {
           "test fixture · mistakes students make",
           {{"default", "lit polygons, lines, points and text"}},
           {{"mistake", 0, 0, 3, "0 none, 1 wrong colour, 2 missing triangle, 3 moved vertex"},
-           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"}},
+           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"},
+           {"throw_after_text", 0, 0, 1, "throw std::invalid_argument from display() after drawing text"}},
           {},
           [] { glEnable(GL_DEPTH_TEST); },
           display,

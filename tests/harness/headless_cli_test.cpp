@@ -112,6 +112,20 @@ TEST(HeadlessCli, GlErrorInDisplayExitsNonZeroAndNamesTheError) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// An exception from display() after text was drawn: one line and exit 1, not
+// a crash (Mesa crashed destroying the context with glBitmap calls still
+// queued; the headless context now finishes before it is destroyed).
+TEST(HeadlessCli, ExceptionInDisplayAfterTextIsOneLineNotACrash) {
+  ScratchDir dir("throw");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r = run_process(
+      {gllab::testing::kFixtureLab.string(), "--set", "throw_after_text=1", "--out", out.string()});
+  EXPECT_EQ(r.exit_status, kFailureStatus) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("display() gave up after its label"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(WindowCli, WithoutADisplayNamesTheHeadlessCommandAndExits2) {
   const gllab::ProcessResult r = run_process(
       {(gllab::testing::kBinDir / kLab).string(), "--view", "wireframe"}, {"DISPLAY="});
