@@ -18,6 +18,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -394,6 +395,17 @@ void GLAPIENTRY on_end(void* data) {
   sink->primitives.push_back({sink->mode, sink->first, sink->positions.size() - sink->first});
 }
 
+/// GLU's (u, v) come through a float texture map and land a few float ulps
+/// outside the domain at its edges (measured: u = 1.0000000596 at u = 1),
+/// where the core's evaluators refuse them: clamp them back. Only for a
+/// surface whose knots give a domain at all (GLU rejected the others).
+void clamp_to_domain(std::vector<Vec2>& uv, const BsplineSurface& s) {
+  if (s.U.size() < static_cast<std::size_t>(2 * s.p + 2) || s.V.size() < static_cast<std::size_t>(2 * s.q + 2)) return;
+  const double u0 = s.U[s.p], u1 = s.U[s.U.size() - 1 - s.p], v0 = s.V[s.q], v1 = s.V[s.V.size() - 1 - s.q];
+  if (!(u0 <= u1 && v0 <= v1)) return;
+  for (Vec2& q : uv) q = {std::clamp(q.x, u0, u1), std::clamp(q.y, v0, v1)};
+}
+
 bool is_line_mode(GLenum mode) {
   return mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP || mode == GL_POINTS;
 }
@@ -661,6 +673,10 @@ CurveCapture GluNurbs::capture_curve(const BsplineCurve& curve, const std::strin
   out.primitives = sink.primitives;
   for (const GluPrimitive& p : sink.primitives)
     if (is_line_mode(p.mode)) out.polylines.push_back(polyline_of(sink, p, true));
+  // The parameter comes through a float map too (see clamp_to_domain).
+  if (curve.U.size() >= static_cast<std::size_t>(2 * curve.p + 2) && curve.U[curve.p] <= curve.U[curve.U.size() - 1 - curve.p])
+    for (CapturedPolyline& line : out.polylines)
+      for (double& u : line.u) u = std::clamp(u, curve.U[curve.p], curve.U[curve.U.size() - 1 - curve.p]);
   out.errors = call.finish();
   return out;
 }
@@ -689,6 +705,7 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
   out.mesh.positions = std::move(sink.positions);
   out.mesh.normals = std::move(sink.normals);
   out.mesh.uv = std::move(sink.uvs);
+  clamp_to_domain(out.mesh.uv, surface);
   for (const GluPrimitive& p : out.primitives) {
     if (is_line_mode(p.mode)) {
       CapturedPolyline line;

@@ -127,7 +127,7 @@ struct GluPrimitive {
 /// A polyline from a curve (or a surface outline), with each vertex's parameter.
 struct CapturedPolyline {
   std::vector<spline::Vec3> points;
-  std::vector<double> u;  // curves: the curve parameter of each point (empty for surface outlines)
+  std::vector<double> u;  // curves: the curve parameter of each point, clamped to the domain (empty for surface outlines)
   bool closed = false;    // GL_LINE_LOOP
 };
 
@@ -141,7 +141,8 @@ struct CurveCapture {
 
 struct SurfaceCapture {
   /// Every vertex GLU sent, in order, with the normal and (u, v) current at
-  /// that moment; triangles made from its strips, fans, triangles, quad strips,
+  /// that moment ((u, v) clamped to the domain: the float texture map lands
+  /// a few ulps outside it at its edges); triangles made from its strips, fans, triangles, quad strips,
   /// quads and polygons: n - 2 per strip, fan or polygon, n / 3 per GL_TRIANGLES,
   /// 2 per quad. Triangles are not deduplicated or dropped when degenerate:
   /// their number is what GLU emitted. Strip triangles keep GL's winding

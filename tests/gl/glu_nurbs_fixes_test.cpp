@@ -1,12 +1,16 @@
-// tests/gl/glu_lost_errors_test.cpp — GLU 9.0.2 finds a misoriented or
-// crossing trim loop (NURBS error 28) but loses the error on the way to its
-// callback; gllab::GluNurbs catches GLU's longjmp and reports it
-// (common/gl/glu_nurbs.cpp, "errors GLU finds and then loses").
+// tests/gl/glu_nurbs_fixes_test.cpp — two things gllab::GluNurbs does about
+// GLU 9.0.2 (common/gl/glu_nurbs.cpp):
+//  - GLU finds a misoriented or crossing trim loop (NURBS error 28) but loses
+//    the error on the way to its callback; the wrapper catches GLU's longjmp
+//    and reports it ("errors GLU finds and then loses");
+//  - the (u, v) of captured vertices come through a float texture map and
+//    are clamped back into the domain, where the core can evaluate them.
 //
 // Capture mode with GLU_DOMAIN_DISTANCE needs no GL context (glu_nurbs.h).
 // The surface is the bilinear-spaced bicubic plane x = 3u, y = 3v, z = 0.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <string>
 #include <vector>
@@ -87,6 +91,26 @@ TEST(GluLostErrors, OtherJumpsPassThroughUntouched) {
   else landed = value;
   EXPECT_EQ(landed, kMisoriented);
   EXPECT_TRUE(gllab::take_frame_errors().empty());
+}
+
+// At u = 1 the float map gave 1.0000000596 (measured), which the core's
+// surface_evaluator refuses; clamped, every captured (u, v) lies in [0, 1]^2
+// and can be evaluated.
+TEST(GluCaptureUv, StaysInTheDomainAtItsEdges) {
+  BsplineSurface s = plane_with({});
+  for (int k = 0; k < 16; ++k) s.P[k].z = 0.1 * (k % 5);  // not flat, so nothing is exact by accident
+  gllab::GluNurbsProperties p;
+  p.sampling_method = GLU_DOMAIN_DISTANCE;
+  p.u_step = p.v_step = 7;
+  const gllab::SurfaceCapture c = gllab::GluNurbs(p).capture_surface(s, "plane");
+  ASSERT_TRUE(c.ok());
+  double u_max = 0, v_max = 0;
+  for (const gllab::spline::Vec2& q : c.mesh.uv) {
+    EXPECT_TRUE(q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1) << q.x << ", " << q.y;
+    u_max = std::max(u_max, q.x), v_max = std::max(v_max, q.y);
+  }
+  EXPECT_EQ(u_max, 1.0);  // the edge itself is reached
+  EXPECT_EQ(v_max, 1.0);
 }
 
 }  // namespace
