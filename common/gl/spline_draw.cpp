@@ -13,10 +13,14 @@ namespace gllab {
 namespace {
 
 // Unlit lines and points in one colour; the destructor restores the state.
+// GL_COLOR_MATERIAL goes off too: else the ink's glColor would become the
+// lit material of whatever is drawn next (popping GL_CURRENT_BIT restores
+// the colour, not the material; measured with Mesa 22.3).
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
     glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LINE_BIT | GL_POINT_BIT);
     glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
     glLineWidth(line_width);
@@ -198,6 +202,15 @@ void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width) {
       vertex(mesh.positions[t[e]]);
       vertex(mesh.positions[t[(e + 1) % 3]]);
     }
+  glEnd();
+}
+
+void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour) {
+  Ink ink(colour, 1.f);
+  glDisable(GL_DEPTH_TEST);
+  glBegin(GL_TRIANGLES);
+  for (std::size_t f : faces)
+    for (int k : mesh.triangles[f]) vertex(mesh.positions[k]);
   glEnd();
 }
 

@@ -1,6 +1,8 @@
 // common/gl/text.cpp — a PSF1 console font drawn with glBitmap.
 #include "gl/text.h"
 
+#include <cstdio>
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -186,6 +188,12 @@ std::vector<std::string> take_recorded_text() {
   std::vector<std::string> lines;
   lines.swap(recorded());
   return lines;
+}
+
+std::string fmt(const char* printf_format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, printf_format, value);
+  return text;
 }
 
 int text_width(const std::string& utf8) {

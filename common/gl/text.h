@@ -30,6 +30,10 @@ void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb co
 /// Width in pixels of the text drawn by draw_text (one glyph per code point).
 int text_width(const std::string& utf8);
 
+/// One number in printf's notation, for labels: fmt("%.2e", 0.00127) is
+/// "1.27e-03", fmt("%g steps", 32) is "32 steps" (at most 63 characters).
+std::string fmt(const char* printf_format, double value);
+
 /// While on, every string draw_text and draw_text_panel draw is also kept, in
 /// order; take_recorded_text() hands them over and starts again. The headless
 /// runner's --print-text prints them, so a test can read the numbers a view

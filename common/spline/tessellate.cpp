@@ -1638,7 +1638,8 @@ MeshFidelity mesh_fidelity(const Mesh& mesh, const SurfaceEvaluator& surface, do
   MeshFidelity f;
   // Barycentre and edge midpoints, as tessellate.h measures its tolerance.
   const double samples[4][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}};
-  for (const auto& t : mesh.triangles) {
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     const Vec3 P[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
     const Vec2 Q[3] = {mesh.uv[t[0]], mesh.uv[t[1]], mesh.uv[t[2]]};
     for (const auto& b : samples) {
@@ -1652,8 +1653,9 @@ MeshFidelity mesh_fidelity(const Mesh& mesh, const SurfaceEvaluator& surface, do
     const Vec3 n = surface(centre.x, centre.y).normal;
     const double tilt = std::atan2(norm(cross(face, n)), dot(face, n)) * kDegrees;
     f.max_tilt_degrees = std::max(f.max_tilt_degrees, tilt);
-    if (tilt > tilt_degrees) ++f.tilted_faces;
+    if (tilt > tilt_degrees) f.tilted.push_back(i);
   }
+  f.tilted_faces = f.tilted.size();
   const Mesh welded = weld({mesh}, weld_tolerance);
   for (const auto& e : boundary_edges(welded))
     for (double s : {0.25, 0.5, 0.75}) {

@@ -262,9 +262,11 @@ struct MeshFidelity {
   double max_trim_deviation = 0;
   /// Triangles whose normal (P1 - P0) x (P2 - P0) is more than tilt_degrees
   /// from the surface normal at their (u, v) barycentre (a reversed triangle
-  /// is tilted by about 180), and the largest tilt. Triangles of zero area
-  /// have no normal and are not counted.
+  /// is tilted by about 180): how many, which (indices into mesh.triangles,
+  /// ascending), and the largest tilt. Triangles of zero area have no normal
+  /// and are not counted.
   std::size_t tilted_faces = 0;
+  std::vector<std::size_t> tilted;
   double max_tilt_degrees = 0;
 };
 

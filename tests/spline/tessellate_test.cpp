@@ -957,6 +957,7 @@ TEST(MeshFidelity, ReversedTriangleTiltsByAbout180Degrees) {
   std::swap(m.triangles[7][0], m.triangles[7][1]);
   const MeshFidelity f = mesh_fidelity(m, b, kSliverTiltDegrees);
   EXPECT_EQ(f.tilted_faces, 1u);
+  EXPECT_EQ(f.tilted, std::vector<std::size_t>{7});
   EXPECT_GT(f.max_tilt_degrees, 179);
 }
 
