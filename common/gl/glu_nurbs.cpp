@@ -674,9 +674,12 @@ CurveCapture GluNurbs::capture_curve(const BsplineCurve& curve, const std::strin
   for (const GluPrimitive& p : sink.primitives)
     if (is_line_mode(p.mode)) out.polylines.push_back(polyline_of(sink, p, true));
   // The parameter comes through a float map too (see clamp_to_domain).
-  if (curve.U.size() >= static_cast<std::size_t>(2 * curve.p + 2) && curve.U[curve.p] <= curve.U[curve.U.size() - 1 - curve.p])
-    for (CapturedPolyline& line : out.polylines)
-      for (double& u : line.u) u = std::clamp(u, curve.U[curve.p], curve.U[curve.U.size() - 1 - curve.p]);
+  if (curve.U.size() >= static_cast<std::size_t>(2 * curve.p + 2)) {
+    const double a = curve.U[curve.p], b = curve.U[curve.U.size() - 1 - curve.p];
+    if (a <= b)
+      for (CapturedPolyline& line : out.polylines)
+        for (double& u : line.u) u = std::clamp(u, a, b);
+  }
   out.errors = call.finish();
   return out;
 }

@@ -127,7 +127,9 @@ struct GluPrimitive {
 /// A polyline from a curve (or a surface outline), with each vertex's parameter.
 struct CapturedPolyline {
   std::vector<spline::Vec3> points;
-  std::vector<double> u;  // curves: the curve parameter of each point, clamped to the domain (empty for surface outlines)
+  /// Curves: the curve parameter of each point, clamped to the domain (the
+  /// float map lands a few ulps outside at its ends); empty for surface outlines.
+  std::vector<double> u;
   bool closed = false;    // GL_LINE_LOOP
 };
 

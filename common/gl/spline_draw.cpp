@@ -205,13 +205,17 @@ void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width) {
   glEnd();
 }
 
-void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour) {
-  Ink ink(colour, 1.f);
+void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour, float width) {
+  Ink ink(colour, std::max(width, 1.f));
+  glPushAttrib(GL_POLYGON_BIT);
+  if (width > 0) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   glBegin(GL_TRIANGLES);
   for (std::size_t f : faces)
     for (int k : mesh.triangles[f]) vertex(mesh.positions[k]);
   glEnd();
+  glPopAttrib();
 }
 
 void draw_normal_needles(const spline::Mesh& mesh, double length, Rgb colour, int every) {

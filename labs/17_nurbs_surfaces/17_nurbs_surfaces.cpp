@@ -69,7 +69,7 @@ BsplineSurface surface_of(const State& s, int degree) {
 // Drawing -------------------------------------------------------------------
 // One panel's camera: the net's square tilted 60° towards us, turned 30°.
 void camera(const Panel& p, double zoom = 1) {
-  gllab::ortho_fit(p.width, p.height, 3.1 / zoom, 2.4 / zoom, 20);
+  gllab::ortho_fit(p.width, p.height, 3.1 / zoom, 2.9 / zoom, 20);
   gllab::enable_headlight();  // a direction in eye space: set before the turns
   glRotatef(-60.f, 1.f, 0.f, 0.f);
   glRotatef(-30.f, 0.f, 0.f, 1.f);
@@ -272,11 +272,11 @@ gllab::Lab gllab::define_lab() {
                  {{"degree", 3, 2, 3, "degree p = q of every view but default: 3 bicubic, 2 biquadratic"},
                   {"weight", 2, 0.25, 10, "weight of the middle control point P(2, 2)"},
                   {"net", 1, 0, 1, "default: show the control net"},
-                  {"path_px", 25, 1, 200, "GLU_PATH_LENGTH: longest edge, pixels"},
-                  {"error_px", 0.5, 0.05, 20, "GLU_PARAMETRIC_ERROR: distance to the surface, pixels"},
+                  {"path_px", 40, 1, 200, "GLU_PATH_LENGTH: longest edge, pixels"},
+                  {"error_px", 2, 0.05, 20, "GLU_PARAMETRIC_ERROR: distance to the surface, pixels"},
                   {"steps", 8, 1, 100, "GLU_DOMAIN_DISTANCE: GLU_U_STEP = GLU_V_STEP, samples per unit"},
-                  {"object_length", 0.25, 0.01, 2, "GLU_OBJECT_PATH_LENGTH: longest edge, object units"},
-                  {"object_error", 0.01, 0.0005, 1, "GLU_OBJECT_PARAMETRIC_ERROR, and own_vs_glu's tolerance"},
+                  {"object_length", 1, 0.01, 2, "GLU_OBJECT_PATH_LENGTH: longest edge, object units"},
+                  {"object_error", 0.03, 0.0005, 1, "GLU_OBJECT_PARAMETRIC_ERROR, and own_vs_glu's tolerance"},
                   {"finer", 0, -3, 3, "every tolerance / 2^finer, steps x 2^finer"},
                   {"zoom", 3, 1, 8, "display_list: camera zoom (the list was compiled at 1)"},
                   {"mistake", 0, 0, 1, "difference: feed GLU (x, y, z, w) not premultiplied"}},

@@ -65,7 +65,7 @@ const std::vector<Vec2> kSquare = {{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9
 constexpr double kTiltDegrees = 20;  // a face this far from the surface's normal is a sliver
 const gllab::Rgb kGlu{0.95f, 0.6f, 0.25f}, kOwn{0.35f, 0.65f, 0.95f}, kWire{0.1f, 0.1f, 0.1f},
     kText{1.f, 1.f, 1.f}, kPwl{1.f, 1.f, 1.f}, kTrim2{0.4f, 0.9f, 0.4f}, kTrim3{0.45f, 0.7f, 1.f},
-    kSliver{1.f, 0.25f, 0.25f};
+    kSliver{1.f, 0.25f, 0.25f}, kDim{0.25f, 0.26f, 0.3f};
 
 // The polyline with `per_edge` points on each edge: what GLU needs.
 std::vector<Vec2> densified(const std::vector<Vec2>& p, int per_edge) {
@@ -107,9 +107,7 @@ void camera(const Panel& p, double extent = 3.4) {
   glRotatef(-30.f, 1.f, 0.f, 0.f);
 }
 
-void caption(const Panel& p, int line, const std::string& text, gllab::Rgb c = kText) {
-  gllab::draw_panel_caption(p, line, text, c);
-}
+void caption(const Panel& p, int l, const std::string& t, gllab::Rgb c = kText) { draw_panel_caption(p, l, t, c); }
 
 double finer(const State& s) { return std::pow(2.0, s.get("finer")); }
 
@@ -125,11 +123,15 @@ spline::Mesh own_mesh(const BsplineSurface& S, const State& s) {
   return spline::tessellate_surface(spline::surface_evaluator(S), spline::uv_domain(S), options, S.trims);
 }
 
+void uv_camera(const Panel& p) {  // the (u, v) square [0, 1]^2 in the middle of the panel
+  gllab::ortho_fit(p.width, p.height, 0.62, 0.62);
+  glTranslated(-0.5, -0.5, 0);
+}
+
 // The (u, v) square with the loops: gluPwlCurve white, GLU_MAP1_TRIM_2 green,
 // GLU_MAP1_TRIM_3 blue, an arrowhead where each piece ends.
 void draw_loops(const Panel& p, const std::vector<spline::TrimLoop>& trims) {
-  gllab::ortho_fit(p.width, p.height, 0.62, 0.62);
-  glTranslated(-0.5, -0.5, 0);
+  uv_camera(p);
   gllab::draw_polyline({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0.5f, 0.5f, 0.55f}, 1.f, true);
   for (const spline::TrimLoop& loop : trims)
     for (const spline::TrimPiece& piece : loop.pieces) {
@@ -212,16 +214,14 @@ void draw_slivers(const State& s) {
   const spline::Mesh meshes[3] = {gllab::GluNurbs(glu_sampling(s)).capture_surface(coarse, "5-point square").mesh,
                           gllab::GluNurbs(glu_sampling(s)).capture_surface(dense, "dense square").mesh, own};
   const char* titles[3] = {"GLU, 5-point gluPwlCurve", "GLU, densified polyline", "own core"};
-  std::vector<std::size_t> slivers;  // GLU's coarse faces tilted > 20°
   glShadeModel(GL_FLAT);  // every triangle shows
   for (int k = 0; k < 3; ++k) {
     const Panel p = gllab::enter_panel(k % 2, k / 2, 2, 2, s.width, s.height);
     camera(p, 5.2);
     const spline::MeshFidelity f = spline::mesh_fidelity(meshes[k], surface, kTiltDegrees);
     if (k < 2) draw_glu(k == 0 ? coarse : dense, glu_sampling(s), true);
-    else glColor3f(kOwn.r, kOwn.g, kOwn.b), gllab::draw_mesh_with_edges(own, kWire);
-    gllab::draw_mesh_faces(meshes[k], f.tilted, kSliver);
-    if (k == 0) slivers = f.tilted;
+    else glColor3f(kOwn.r, kOwn.g, kOwn.b), gllab::draw_mesh(own);  // flat shading shows its triangles
+    gllab::draw_mesh_faces(meshes[k], f.tilted, kSliver, 2.f);
     caption(p, 0, titles[k]);
     caption(p, -3, "area " + fmt("%+.2f %%", 100 * (spline::mesh_area(meshes[k]) - area) / area));
     caption(p, -2, "faces tilted > 20°: " + std::to_string(f.tilted_faces), f.tilted_faces ? kSliver : kText);
@@ -230,9 +230,9 @@ void draw_slivers(const State& s) {
   const Panel p = gllab::enter_panel(1, 1, 2, 2, s.width, s.height);
   spline::Mesh flat = meshes[0];  // GLU's coarse triangles laid out in (u, v)
   for (std::size_t k = 0; k < flat.positions.size(); ++k) flat.positions[k] = {flat.uv[k].x, flat.uv[k].y, 0};
-  draw_loops(p, coarse.trims);
-  gllab::draw_mesh_wireframe(flat, kGlu);
-  gllab::draw_mesh_faces(flat, slivers, kSliver);
+  uv_camera(p);
+  gllab::draw_mesh_wireframe(flat, kDim);
+  gllab::draw_mesh_faces(flat, spline::mesh_fidelity(meshes[0], surface, kTiltDegrees).tilted, kSliver, 2.f);
   gllab::leave_panels(s.width, s.height);
   caption(p, 0, "the same triangles in (u, v)");
 }
@@ -284,8 +284,8 @@ gllab::Lab gllab::define_lab() {
        {"own_vs_glu", "GLU's trimmed surface and the own tessellation, deviations inside and along the trims"},
        {"slivers", "a 5-point gluPwlCurve square: GLU's slivers, GLU fed a dense polyline, the own core"},
        {"reversed_outer_loop", "the outer loop clockwise: GLU NURBS error 28", true}},
-      {{"steps", 32, 2, 100, "GLU_DOMAIN_DISTANCE: GLU_U_STEP = GLU_V_STEP"},
-       {"tol", 0.01, 0.0005, 0.5, "the own tessellation's tolerance, object units"},
+      {{"steps", 24, 2, 100, "GLU_DOMAIN_DISTANCE: GLU_U_STEP = GLU_V_STEP"},
+       {"tol", 0.02, 0.0005, 0.5, "the own tessellation's tolerance, object units"},
        {"finer", 0, -3, 3, "tol / 2^finer, steps x 2^finer"},
        {"per_edge", 16, 1, 64, "points per edge of the densified polylines"}},
       {{'t', "finer (tol / 2, steps x 2)", "finer", +1}, {'T', "coarser", "finer", -1},
