@@ -64,9 +64,10 @@ TEST(GluLostErrors, ClockwiseOuterLoopIsError28AndNothingIsDrawn) {
 }
 
 TEST(GluLostErrors, CrossingHolesAreError28) {
-  const gllab::SurfaceCapture c =
-      capture(plane_with({loop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), loop({{0.2, 0.2}, {0.2, 0.6}, {0.6, 0.6}, {0.6, 0.2}}),
-                          loop({{0.4, 0.4}, {0.4, 0.8}, {0.8, 0.8}, {0.8, 0.4}})}));
+  const TrimLoop outer = loop({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const TrimLoop hole_a = loop({{0.2, 0.2}, {0.2, 0.6}, {0.6, 0.6}, {0.6, 0.2}});  // clockwise
+  const TrimLoop hole_b = loop({{0.4, 0.4}, {0.4, 0.8}, {0.8, 0.8}, {0.8, 0.4}});  // clockwise, overlapping hole_a
+  const gllab::SurfaceCapture c = capture(plane_with({outer, hole_a, hole_b}));
   ASSERT_EQ(c.errors.size(), 1u);
   EXPECT_EQ(c.errors[0].nurbs_error, kMisoriented);
 }
