@@ -7,7 +7,7 @@
 // Notice: GLU keeps what lies left of every trim curve: the outer loop and the
 //   island run counter-clockwise, the holes clockwise. GLU does not refine the
 //   edges of a gluPwlCurve: a coarse square gets slivers fanned from its
-//   corners across the surface (slivers), 5-30 % too much area.
+//   corners across the surface (view slivers), 5-30 % too much area.
 // Try: in slivers press [E] until the polyline is coarse again: when do the
 //   slivers come back? Look at reversed_outer_loop: which error does GLU
 //   raise, and which loop does the own core name?
