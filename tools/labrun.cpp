@@ -6,6 +6,10 @@
 //   labrun --update-references [--labs 01,13] [--views NAME,...] [--refs DIR] [--env NAME=VALUE]...
 //   labrun --check-references  [--bin DIR] [--refs DIR]
 //
+// An error view (harness/lab.h View::expect_error; --list-views prints
+// "name expect_error") has no reference image: --update-references skips it
+// and --check-references expects none.
+//
 // Exit status: 0 done / all present, 1 a reference missing or stray, 2 usage or input error.
 #include <unistd.h>
 
@@ -118,13 +122,25 @@ Settings parse(int argc, char** argv) {
 
 fs::path renderer_of(const Settings& s, const std::string& lab) { return s.bin / (lab + "_headless"); }
 
-std::vector<std::string> views_of(const Settings& s, const std::string& lab) {
+// One line of --list-views: "name", or "name expect_error" for an error view
+// (harness/lab.h View::expect_error: headless it exits 1, it has no reference).
+struct ViewEntry {
+  std::string name;
+  bool expect_error = false;
+};
+
+std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
   const gllab::ProcessResult r = gllab::run_process({renderer_of(s, lab).string(), "--list-views"});
   if (!r.started || r.exit_status != 0)
     throw UsageError(lab + ": cannot list views: " + gllab::first_line(r.err));
-  std::vector<std::string> views;
-  for (const std::string& v : split(r.out, '\n'))
-    if (s.views.empty() || s.views.count(v)) views.push_back(v);
+  std::vector<ViewEntry> views;
+  for (const std::string& line : split(r.out, '\n')) {
+    const std::vector<std::string> words = split(line, ' ');
+    if (words.empty()) continue;
+    if (words.size() > 2 || (words.size() == 2 && words[1] != "expect_error"))
+      throw UsageError(lab + ": --list-views printed '" + line + "' (expected a name, optionally 'expect_error')");
+    if (s.views.empty() || s.views.count(words[0])) views.push_back({words[0], words.size() == 2});
+  }
   return views;
 }
 
@@ -136,8 +152,15 @@ int check_references(const Settings& s) {
   std::set<std::string> expected;
   int problems = 0;
   for (const std::string& lab : s.labs)
-    for (const std::string& view : views_of(s, lab)) {
-      const std::string name = reference_name(lab, view);
+    for (const ViewEntry& view : views_of(s, lab)) {
+      const std::string name = reference_name(lab, view.name);
+      if (view.expect_error) {
+        if (fs::exists(s.refs / name)) {
+          std::printf("reference for an error view (it exits 1, it has none): %s\n", (s.refs / name).c_str());
+          ++problems;
+        }
+        continue;
+      }
       expected.insert(name);
       if (!fs::exists(s.refs / name)) {
         std::printf("missing reference: %s\n", (s.refs / name).c_str());
@@ -172,7 +195,12 @@ int update_references(const Settings& s) {
       if (info.exit_status != 0) throw UsageError(lab + ": --info failed: " + gllab::first_line(info.err));
       renderer_info = info.out;
     }
-    for (const std::string& view : views_of(s, lab)) {
+    for (const ViewEntry& entry : views_of(s, lab)) {
+      const std::string& view = entry.name;
+      if (entry.expect_error) {
+        std::printf("skipped %s %s: an error view has no reference\n", lab.c_str(), view.c_str());
+        continue;
+      }
       const fs::path target = s.refs / reference_name(lab, view);
       const gllab::ProcessResult r = gllab::run_process(
           {renderer_of(s, lab).string(), "--view", view, "--out", target.string()}, s.env);

@@ -16,9 +16,13 @@
 //    strips for GLU_OUTLINE_PATCH).
 #include "gl/glu_nurbs.h"
 
+#include <dlfcn.h>
+
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <utility>
 
 #include "harness/lab.h"
@@ -103,6 +107,13 @@ void GLAPIENTRY on_glu_error(GLenum code) {
     // Every GLU call of this file runs inside a CallScope; this would be a bug here.
     report_frame_error(make_error("GLU NURBS call outside gllab::GluNurbs", code).message);
   }
+}
+
+// GLU error n that GLU raised with longjmp and never reported (see
+// __longjmp_chk at the end of this file): recorded for the call in progress.
+void record_lost_error(int value) {
+  if (t_call && value >= 1 && value <= static_cast<int>(GLU_NURBS_ERROR37 - GLU_NURBS_ERROR1) + 1)
+    t_call->errors.push_back(make_error(t_call->what, GLU_NURBS_ERROR1 + static_cast<GLenum>(value) - 1));
 }
 
 class CallScope {
@@ -384,6 +395,17 @@ void GLAPIENTRY on_end(void* data) {
   sink->primitives.push_back({sink->mode, sink->first, sink->positions.size() - sink->first});
 }
 
+/// GLU's (u, v) come through a float texture map and land a few float ulps
+/// outside the domain at its edges (measured: u = 1.0000000596 at u = 1),
+/// where the core's evaluators refuse them: clamp them back. Only for a
+/// surface whose knots give a domain at all (GLU rejected the others).
+void clamp_to_domain(std::vector<Vec2>& uv, const BsplineSurface& s) {
+  if (s.U.size() < static_cast<std::size_t>(2 * s.p + 2) || s.V.size() < static_cast<std::size_t>(2 * s.q + 2)) return;
+  const double u0 = s.U[s.p], u1 = s.U[s.U.size() - 1 - s.p], v0 = s.V[s.q], v1 = s.V[s.V.size() - 1 - s.q];
+  if (!(u0 <= u1 && v0 <= v1)) return;
+  for (Vec2& q : uv) q = {std::clamp(q.x, u0, u1), std::clamp(q.y, v0, v1)};
+}
+
 bool is_line_mode(GLenum mode) {
   return mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP || mode == GL_POINTS;
 }
@@ -651,6 +673,13 @@ CurveCapture GluNurbs::capture_curve(const BsplineCurve& curve, const std::strin
   out.primitives = sink.primitives;
   for (const GluPrimitive& p : sink.primitives)
     if (is_line_mode(p.mode)) out.polylines.push_back(polyline_of(sink, p, true));
+  // The parameter comes through a float map too (see clamp_to_domain).
+  if (curve.U.size() >= static_cast<std::size_t>(2 * curve.p + 2)) {
+    const double a = curve.U[curve.p], b = curve.U[curve.U.size() - 1 - curve.p];
+    if (a <= b)
+      for (CapturedPolyline& line : out.polylines)
+        for (double& u : line.u) u = std::clamp(u, a, b);
+  }
   out.errors = call.finish();
   return out;
 }
@@ -679,6 +708,7 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
   out.mesh.positions = std::move(sink.positions);
   out.mesh.normals = std::move(sink.normals);
   out.mesh.uv = std::move(sink.uvs);
+  clamp_to_domain(out.mesh.uv, surface);
   for (const GluPrimitive& p : out.primitives) {
     if (is_line_mode(p.mode)) {
       CapturedPolyline line;
@@ -695,3 +725,31 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
 }
 
 }  // namespace gllab
+
+// ---- errors GLU finds and then loses -------------------------------------------
+// GLU 9.0.2 checks trim loops while it tessellates (libnurbs, Subdivider::
+// drawSurfaces and the ccwTurn tests): a trim curve that does not meet the
+// next piece gives NURBS error 31, a loop running the wrong way (a clockwise
+// outer loop) or two loops that cross give error 28. It leaves the
+// tessellation with longjmp, to a setjmp GLU made inside its own
+// out-of-line mysetjmp() (libnurbs/internals/mysetjmp.h), a function that has
+// already returned. The jump lands in that dead frame, whose return address
+// the tessellation has overwritten with its own, and comes back as if the
+// tessellation had finished: the error callback is never called and the
+// surface silently disappears (measured with gdb, libglu1-mesa 9.0.2-1.1: the
+// longjmp carries 28 or 31, no callback follows, no vertex is drawn).
+// GLU jumps through glibc's fortified __longjmp_chk (nm -D libGLU.so.1 lists
+// it, and no other longjmp). The definition below, linked into every program
+// that uses GluNurbs, is found before glibc's; during a GluNurbs call it
+// records the code as the call's error, exactly as the callback would have,
+// and then jumps as glibc would (the next definition, dlsym RTLD_NEXT: glibc,
+// or the AddressSanitizer's). Outside a call it only passes the jump on.
+// The parameter is glibc's struct __jmp_buf_tag[1], passed on untouched.
+extern "C" [[noreturn]] void __longjmp_chk(void* env, int value) {
+  using LongJump = void (*)(void*, int);
+  static const auto next = reinterpret_cast<LongJump>(dlsym(RTLD_NEXT, "__longjmp_chk"));
+  gllab::record_lost_error(value);
+  if (!next) std::abort();  // no glibc: cannot happen in a program that links GLU
+  next(env, value);
+  std::abort();  // __longjmp_chk does not return
+}

@@ -21,6 +21,12 @@
 //    "gluNurbsSurface (trimmed hill): GLU NURBS error 28 (intersecting or misoriented trim curves)".
 //    The window shows it, the headless runner exits 1.
 //
+// GLU 9.0.2 finds a misoriented or crossing trim loop (NURBS error 28) and an
+// unconnected trim curve (error 31) but loses both on the way to its error
+// callback (a longjmp into a dead frame; glu_nurbs.cpp, "errors GLU finds and
+// then loses"). The wrapper catches that longjmp and reports them like any
+// other GLU error.
+//
 // GLU passes its error callback no user data (GLU 9.0.2 has no
 // GLU_NURBS_ERROR_DATA: measured, the enum is not in glu.h and a callback
 // registered under the next free number is never called). GLU calls it
@@ -121,7 +127,9 @@ struct GluPrimitive {
 /// A polyline from a curve (or a surface outline), with each vertex's parameter.
 struct CapturedPolyline {
   std::vector<spline::Vec3> points;
-  std::vector<double> u;  // curves: the curve parameter of each point (empty for surface outlines)
+  /// Curves: the curve parameter of each point, clamped to the domain (the
+  /// float map lands a few ulps outside at its ends); empty for surface outlines.
+  std::vector<double> u;
   bool closed = false;    // GL_LINE_LOOP
 };
 
@@ -135,7 +143,8 @@ struct CurveCapture {
 
 struct SurfaceCapture {
   /// Every vertex GLU sent, in order, with the normal and (u, v) current at
-  /// that moment; triangles made from its strips, fans, triangles, quad strips,
+  /// that moment ((u, v) clamped to the domain: the float texture map lands
+  /// a few ulps outside it at its edges); triangles made from its strips, fans, triangles, quad strips,
   /// quads and polygons: n - 2 per strip, fan or polygon, n / 3 per GL_TRIANGLES,
   /// 2 per quad. Triangles are not deduplicated or dropped when degenerate:
   /// their number is what GLU emitted. Strip triangles keep GL's winding

@@ -22,12 +22,16 @@ namespace {
 // of each other, the one drawn later wins on every rasteriser. (Written
 // depths tie there, and llvmpipe and softpipe break the ties differently.)
 // So draw surfaces first, then what goes on them.
+// GL_COLOR_MATERIAL goes off too: else the ink's glColor would become the
+// lit material of whatever is drawn next (popping GL_CURRENT_BIT restores
+// the colour, not the material; measured with Mesa 22.3).
 struct Ink {
   Ink(Rgb colour, float line_width, float point_size = 1.f) {
     glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_LINE_BIT | GL_POINT_BIT |
                  GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDepthMask(GL_FALSE);
     glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
     glDisable(GL_TEXTURE_2D);
     glColor3f(colour.r, colour.g, colour.b);
     glLineWidth(line_width);
@@ -346,6 +350,19 @@ void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width) {
       vertex(mesh.positions[t[(e + 1) % 3]]);
     }
   glEnd();
+}
+
+void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour, float width) {
+  Ink ink(colour, std::max(width, 1.f));
+  glPushAttrib(GL_POLYGON_BIT);
+  if (width > 0) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glBegin(GL_TRIANGLES);
+  for (std::size_t f : faces)
+    for (int k : mesh.triangles[f]) vertex(mesh.positions[k]);
+  glEnd();
+  glPopAttrib();
 }
 
 void draw_normal_needles(const spline::Mesh& mesh, double length, Rgb colour, int every) {

@@ -135,6 +135,13 @@ void draw_segments(const std::vector<std::array<spline::Vec3, 2>>& segments, Rgb
 void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width = 1.f);
 /// A needle of `length` along the normal at every `every`-th vertex.
 void draw_normal_needles(const spline::Mesh& mesh, double length, Rgb colour, int every = 1);
+/// Some of the mesh's triangles (indices into mesh.triangles), unlit in one
+/// colour over whatever is drawn (no depth test): to point at them, e.g. the
+/// faces spline::mesh_fidelity found tilted. Filled when width is 0, else
+/// their outlines `width` pixels wide (which a sliver thinner than a pixel
+/// still shows the same way on every rasterizer).
+void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour,
+                     float width = 0);
 
 // ---- plots ----------------------------------------------------------------------
 

@@ -1,6 +1,8 @@
 // common/gl/text.cpp — a PSF1 console font drawn with glBitmap.
 #include "gl/text.h"
 
+#include <cstdio>
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -159,7 +161,15 @@ struct PixelSpace {
   int height = 0;
 };
 
+// --print-text (text.h): the strings drawn while recording is on.
+bool g_recording = false;
+std::vector<std::string>& recorded() {
+  static std::vector<std::string> lines;
+  return lines;
+}
+
 void bitmap_text(int x, int y_top, int viewport_height, const std::string& utf8, Rgb c) {
+  if (g_recording) recorded().push_back(utf8);
   const Font* f = font();
   if (!f) return;
   glColor3f(c.r, c.g, c.b);
@@ -175,6 +185,20 @@ void bitmap_text(int x, int y_top, int viewport_height, const std::string& utf8,
 }
 
 }  // namespace
+
+void record_text(bool on) { g_recording = on; }
+
+std::vector<std::string> take_recorded_text() {
+  std::vector<std::string> lines;
+  lines.swap(recorded());
+  return lines;
+}
+
+std::string fmt(const char* printf_format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, printf_format, value);
+  return text;
+}
 
 int text_width(const std::string& utf8) {
   return kGlyphWidth * static_cast<int>(code_points(utf8).size());

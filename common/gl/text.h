@@ -35,4 +35,15 @@ std::string format_text(const char* format, ...) __attribute__((format(printf, 1
 /// Width in pixels of the text drawn by draw_text (one glyph per code point).
 int text_width(const std::string& utf8);
 
+/// One number in printf's notation, for labels: fmt("%.2e", 0.00127) is
+/// "1.27e-03", fmt("%g steps", 32) is "32 steps" (at most 63 characters).
+std::string fmt(const char* printf_format, double value);
+
+/// While on, every string draw_text and draw_text_panel draw is also kept, in
+/// order; take_recorded_text() hands them over and starts again. The headless
+/// runner's --print-text prints them, so a test can read the numbers a view
+/// shows on screen. Off by default (the window never records).
+void record_text(bool on);
+std::vector<std::string> take_recorded_text();
+
 }  // namespace gllab

@@ -12,6 +12,7 @@
 
 #include "gl/check.h"
 #include "gl/gl.h"
+#include "gl/text.h"
 #include "harness/frame.h"
 #include "harness/lab.h"
 #include "harness/offscreen.h"
@@ -38,7 +39,7 @@ int main(int argc, char** argv) {
         return 0;
       }
       if (options.list_views) {
-        for (const gllab::View& v : lab.views) std::printf("%s\n", v.name.c_str());
+        std::fputs(gllab::list_views_text(lab).c_str(), stdout);
         return 0;
       }
       parsed = gllab::make_state(lab, options);
@@ -64,7 +65,9 @@ int main(int argc, char** argv) {
     gllab::Image image;
     for (const std::string& view : views) {
       frame_state.select_view(view);
+      gllab::record_text(options.print_text);  // --print-text: what the frame writes on screen
       gllab::draw_frame(lab, frame_state);
+      gllab::record_text(false);
       glFinish();
       gllab::check_gl_errors("after the frame");
       const std::vector<std::string> errors = gllab::take_frame_errors();
@@ -88,6 +91,7 @@ int main(int argc, char** argv) {
     }
     if (options.out == "-") return 0;
     gllab::write_png(options.out, image);
+    for (const std::string& line : gllab::take_recorded_text()) std::printf("%s\n", line.c_str());
     return 0;
   } catch (const std::exception& e) {
     return fail(1, e.what());

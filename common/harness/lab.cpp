@@ -202,6 +202,8 @@ void validate_lab(const Lab& lab) {
   };
   if (lab.views.empty()) fail("has no views");
   if (!lab.display) fail("has no display()");
+  if (lab.views.front().expect_error)
+    fail("first view '" + lab.views.front().name + "' is an error view (the window opens with the first view)");
   for (std::size_t i = 0; i < lab.views.size(); ++i)
     for (std::size_t j = i + 1; j < lab.views.size(); ++j)
       if (lab.views[i].name == lab.views[j].name) fail("view '" + lab.views[i].name + "' twice");

@@ -25,6 +25,13 @@ namespace gllab {
 struct View {
   std::string name;  // lower_snake, used on the command line and in file names
   std::string what;  // one line for the help overlay and --list-views
+  /// An error view: it exists to show an error (say GLU's NURBS error for a
+  /// reversed trim loop). The window shows the error on screen; headless the
+  /// run exits 1 with the error line, as for any frame error, so the view has
+  /// no reference image. --list-views marks it ("name expect_error"); labrun
+  /// passes it when the render exits 1 with an error line, and fails it when
+  /// it renders. It cannot be a lab's first view (the window opens there).
+  bool expect_error = false;
 };
 
 /// A lab parameter: a number with a range. Toggles are 0/1.

@@ -54,7 +54,13 @@ OffscreenContext::OffscreenContext(int width, int height) : impl_(std::make_uniq
 }
 
 OffscreenContext::~OffscreenContext() {
-  if (impl_->context) OSMesaDestroyContext(impl_->context);
+  // Finish first: a frame left unfinished (display() threw after drawing
+  // text) still has glBitmap calls queued, and Mesa 22.3 crashed flushing
+  // them inside OSMesaDestroyContext (measured, SIGSEGV).
+  if (impl_->context) {
+    glFinish();
+    OSMesaDestroyContext(impl_->context);
+  }
 }
 
 std::string OffscreenContext::renderer() const {

@@ -64,6 +64,7 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     } else if (a == "--overlay") o.overlay = true;
     else if (a == "--list-views") o.list_views = true;
     else if (a == "--info" && runner == Runner::kHeadless) o.info = true;
+    else if (a == "--print-text" && runner == Runner::kHeadless) o.print_text = true;
     else if (a == "--help" || a == "-h") o.help = true;
     else throw UsageError("unknown option '" + a + "' (try --help)");
   }
@@ -111,8 +112,15 @@ std::string columns(const std::vector<std::pair<std::string, std::string>>& rows
 
 std::string views_text(const Lab& lab) {
   std::vector<std::pair<std::string, std::string>> rows;
-  for (const View& v : lab.views) rows.emplace_back(v.name, v.what);
+  for (const View& v : lab.views)
+    rows.emplace_back(v.name, v.expect_error ? v.what + " (error view: headless exits 1)" : v.what);
   return columns(rows, 20);
+}
+
+std::string list_views_text(const Lab& lab) {
+  std::string text;
+  for (const View& v : lab.views) text += v.name + (v.expect_error ? " expect_error\n" : "\n");
+  return text;
 }
 
 std::string usage_text(const Lab& lab, const std::string& program, Runner runner) {
@@ -125,7 +133,8 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
         << "Renders one view of the lab without a display (OSMesa) and writes a PNG\n"
         << "(--out - writes the raw frame to stdout as PAM, for graders; --views a,b,c with\n"
         << "--out - renders several views in one run, one PAM each).\n"
-        << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n\n";
+        << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n"
+        << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n\n";
   } else {
     out << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
         << "       " << program << " --list-views | --help\n\n"

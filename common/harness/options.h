@@ -27,6 +27,7 @@ struct Options {
   double time = 0;                  // --time SECONDS
   bool overlay = false;             // --overlay: draw the help overlay
   bool list_views = false;
+  bool print_text = false;          // --print-text: print the frame's text on stdout (headless)
   bool info = false;                // --info: print renderer and versions (headless)
   bool help = false;
 };
@@ -44,6 +45,9 @@ State make_state(const Lab& lab, const Options& options);
 
 std::string usage_text(const Lab& lab, const std::string& program, Runner runner);
 std::string views_text(const Lab& lab);
+/// What --list-views prints: one view name per line, an error view's name
+/// followed by " expect_error" (View::expect_error; labrun reads it).
+std::string list_views_text(const Lab& lab);
 
 /// "01_immediate_mode" from a path like "build/bin/01_immediate_mode_headless".
 std::string program_name(const char* argv0);

@@ -99,10 +99,13 @@ void display() {
       status = 1;
     }
     w.exit_status = std::max(w.exit_status, status);
-    // --capture-views: the next view, until every one is written.
-    if (!w.capture_views.empty() && w.state->view_index() + 1 < w.state->views().size()) {
+    // --capture-views: the next view, until every one is written (error
+    // views exist to fail, headless too: they have no picture to compare).
+    std::size_t next = w.state->view_index() + 1;
+    while (!w.capture_views.empty() && next < w.state->views().size() && w.state->views()[next].expect_error) ++next;
+    if (!w.capture_views.empty() && next < w.state->views().size()) {
       w.errors.clear();
-      w.state->next_view(+1);
+      w.state->select_view(w.state->views()[next].name);
       glutPostRedisplay();
       return;
     }
@@ -238,7 +241,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (options.list_views) {
-      for (const gllab::View& v : window.lab.views) std::printf("%s\n", v.name.c_str());
+      std::fputs(gllab::list_views_text(window.lab).c_str(), stdout);
       return 0;
     }
     window.state = gllab::make_state(window.lab, options);

@@ -1616,4 +1616,82 @@ std::vector<std::array<Vec3, 2>> contour_segments(const Mesh& mesh, Vec3 directi
   return out;
 }
 
+namespace {
+
+void check_mesh(const Mesh& mesh, const char* what) {
+  if (mesh.uv.size() != mesh.positions.size())
+    fail(std::string(what) + ": the mesh has " + std::to_string(mesh.uv.size()) + " (u, v) for " +
+         std::to_string(mesh.positions.size()) + " vertices");
+  const auto n = static_cast<int>(mesh.positions.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k : mesh.triangles[t])
+      if (k < 0 || k >= n)
+        fail(std::string(what) + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(k) +
+             " of " + std::to_string(n));
+}
+
+}  // namespace
+
+double surface_area(const SurfaceEvaluator& surface, const Mesh& mesh) {
+  check_mesh(mesh, "surface_area");
+  // Radon's rule (Stroud T2:5-1): the centroid, weight 9/40, and the points
+  // with barycentric coordinates (a, a, 1 - 2a) and their permutations,
+  // a = (6 -+ sqrt 15) / 21 with weight (155 -+ sqrt 15) / 1200.
+  const double r15 = std::sqrt(15.0);
+  const double a1 = (6 - r15) / 21, a2 = (6 + r15) / 21;
+  const double w1 = (155 - r15) / 1200, w2 = (155 + r15) / 1200;
+  const double rule[7][4] = {{1.0 / 3, 1.0 / 3, 1.0 / 3, 9.0 / 40},
+                             {a1, a1, 1 - 2 * a1, w1}, {a1, 1 - 2 * a1, a1, w1}, {1 - 2 * a1, a1, a1, w1},
+                             {a2, a2, 1 - 2 * a2, w2}, {a2, 1 - 2 * a2, a2, w2}, {1 - 2 * a2, a2, a2, w2}};
+  double area = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec2 a = mesh.uv[t[0]], b = mesh.uv[t[1]], c = mesh.uv[t[2]];
+    double sum = 0;
+    for (const auto& r : rule) {
+      const Vec2 q = r[0] * a + r[1] * b + r[2] * c;
+      const SurfaceSample s = surface(q.x, q.y);
+      sum += r[3] * norm(cross(s.du, s.dv));
+    }
+    area += std::abs(cross(b - a, c - a)) / 2 * sum;
+  }
+  return area;
+}
+
+MeshFidelity mesh_fidelity(const Mesh& mesh, const SurfaceEvaluator& surface, double tilt_degrees,
+                           double weld_tolerance) {
+  check_mesh(mesh, "mesh_fidelity");
+  if (!(tilt_degrees >= 0 && tilt_degrees <= 180))
+    fail("mesh_fidelity: tilt_degrees=" + num(tilt_degrees) + " must be in [0, 180]");
+  const double kDegrees = 180 / std::acos(-1.0);
+  MeshFidelity f;
+  // Barycentre and edge midpoints, as tessellate.h measures its tolerance.
+  const double samples[4][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}};
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    const Vec3 P[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+    const Vec2 Q[3] = {mesh.uv[t[0]], mesh.uv[t[1]], mesh.uv[t[2]]};
+    for (const auto& b : samples) {
+      const Vec2 q = b[0] * Q[0] + b[1] * Q[1] + b[2] * Q[2];
+      const Vec3 p = b[0] * P[0] + b[1] * P[1] + b[2] * P[2];
+      f.max_deviation = std::max(f.max_deviation, norm(surface(q.x, q.y).point - p));
+    }
+    const Vec3 face = cross(P[1] - P[0], P[2] - P[0]);
+    if (norm(face) == 0) continue;
+    const Vec2 centre = (Q[0] + Q[1] + Q[2]) / 3;
+    const Vec3 n = surface(centre.x, centre.y).normal;
+    const double tilt = std::atan2(norm(cross(face, n)), dot(face, n)) * kDegrees;
+    f.max_tilt_degrees = std::max(f.max_tilt_degrees, tilt);
+    if (tilt > tilt_degrees) f.tilted.push_back(i);
+  }
+  f.tilted_faces = f.tilted.size();
+  const Mesh welded = weld({mesh}, weld_tolerance);
+  for (const auto& e : boundary_edges(welded))
+    for (double s : {0.25, 0.5, 0.75}) {
+      const Vec2 q = (1 - s) * welded.uv[e[0]] + s * welded.uv[e[1]];
+      const Vec3 p = lerp(welded.positions[e[0]], welded.positions[e[1]], s);
+      f.max_trim_deviation = std::max(f.max_trim_deviation, norm(surface(q.x, q.y).point - p));
+    }
+  return f;
+}
+
 }  // namespace gllab::spline

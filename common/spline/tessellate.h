@@ -253,4 +253,45 @@ std::vector<std::array<int, 2>> boundary_edges(const Mesh& mesh);
 /// direction or a non-finite level.
 std::vector<std::array<Vec3, 2>> contour_segments(const Mesh& mesh, Vec3 direction, double level);
 
+/// The area of the surface over the (u, v) triangles of a mesh: for each
+/// triangle, the integral of |S_u x S_v| over its (u, v) corners, by Radon's
+/// 7-point rule, exact for polynomials of degree 5 (Stroud, "Approximate
+/// Calculation of Multiple Integrals", 1971, formula T2:5-1). When the (u, v)
+/// triangles tile a trimmed region, as tessellate_surface's do, this is the
+/// area of the trimmed surface itself, however well or badly the triangles
+/// follow it in 3D: the reference against which mesh_area is judged.
+/// The evaluator must return the partials du, dv (surface_evaluator does).
+double surface_area(const SurfaceEvaluator& surface, const Mesh& mesh);
+
+/// How closely a mesh with a (u, v) per vertex follows its surface S
+/// (mesh_fidelity). T(u, v) is a triangle's point at the barycentric
+/// coordinates (u, v) has among its (u, v) corners.
+struct MeshFidelity {
+  /// max |S(u, v) - T(u, v)| at every triangle's barycentre and edge
+  /// midpoints: the parametric error tessellate_surface's tolerance bounds.
+  double max_deviation = 0;
+  /// The same at the quarter points of every boundary edge (the edges used
+  /// by one triangle once coincident vertices are welded): how closely the
+  /// mesh's rim follows the surface along its trim (and patch) edges. GLU
+  /// draws a gluPwlCurve edge as one chord, so here it can be far off.
+  double max_trim_deviation = 0;
+  /// Triangles whose normal (P1 - P0) x (P2 - P0) is more than tilt_degrees
+  /// from the surface normal at their (u, v) barycentre (a reversed triangle
+  /// is tilted by about 180): how many, which (indices into mesh.triangles,
+  /// ascending), and the largest tilt. Triangles of zero area have no normal
+  /// and are not counted.
+  std::size_t tilted_faces = 0;
+  std::vector<std::size_t> tilted;
+  double max_tilt_degrees = 0;
+};
+
+/// Measures a mesh against the surface it came from: the own tessellation,
+/// or GLU's (gllab::GluNurbs capture mode gives every vertex its (u, v)).
+/// Vertices closer than weld_tolerance count as one for the boundary (GLU
+/// sends each strip's vertices again). Throws std::invalid_argument for
+/// tilt_degrees outside [0, 180], a bad weld_tolerance, or a mesh whose uv
+/// or triangle indices do not fit its positions.
+MeshFidelity mesh_fidelity(const Mesh& mesh, const SurfaceEvaluator& surface, double tilt_degrees,
+                           double weld_tolerance = kWeldTolerance);
+
 }  // namespace gllab::spline

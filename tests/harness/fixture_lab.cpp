@@ -10,6 +10,7 @@
 // and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose;
 // `throws=1` makes it throw std::invalid_argument half-way, with a matrix and
 // an attribute group still pushed (as the spline core does on bad input).
+// `throw_after_text=1` throws from display() after its text is drawn.
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -74,6 +75,7 @@ void display(const gllab::State& s) {
     glPushAttrib(GL_CURRENT_BIT);
     throw std::invalid_argument("fixture: thrown in display() on purpose");
   }
+  if (s.flag("throw_after_text")) throw std::invalid_argument("display() gave up after its label");
 }
 
 }  // namespace
@@ -84,7 +86,8 @@ gllab::Lab gllab::define_lab() {
           {{"default", "lit polygons, lines, points and text"}},
           {{"mistake", 0, 0, 3, "0 none, 1 wrong colour, 2 missing triangle, 3 moved vertex"},
            {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"},
-           {"throws", 0, 0, 1, "throw std::invalid_argument in display()"}},
+           {"throws", 0, 0, 1, "throw std::invalid_argument in display()"},
+           {"throw_after_text", 0, 0, 1, "throw std::invalid_argument from display() after drawing text"}},
           {},
           [] { glEnable(GL_DEPTH_TEST); },
           display,

@@ -72,6 +72,21 @@ TEST(HeadlessCli, ListViewsPrintsOneViewPerLine) {
     EXPECT_NE(r.out.find(view), std::string::npos) << r.out;
 }
 
+// --print-text prints the text the frame drew, one string per line, after
+// writing the PNG: lab 01's default view labels its primitives by their GL
+// names (labs/01_immediate_mode). Without it a successful run prints nothing.
+TEST(HeadlessCli, PrintTextPrintsTheLabelsTheFrameDrew) {
+  ScratchDir dir("print_text");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r = run_process({headless(kLab), "--print-text", "--out", out.string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  for (const char* label : {"GL_POLYGON\n", "GL_TRIANGLE_STRIP\n"})
+    EXPECT_NE(r.out.find(label), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  const gllab::ProcessResult quiet = run_process({headless(kLab), "--out", out.string()});
+  EXPECT_EQ(quiet.out, "");
+}
+
 TEST(HeadlessCli, HelpNamesEveryOption) {
   const gllab::ProcessResult r = run_process({headless(kLab), "--help"});
   EXPECT_EQ(r.exit_status, 0);
@@ -113,6 +128,20 @@ TEST(HeadlessCli, ExceptionInDisplayIsAFrameErrorNamingTheView) {
   EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("view 'default': fixture: thrown in display() on purpose"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("GL_STACK"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// An exception from display() after text was drawn: one line and exit 1, not
+// a crash (Mesa crashed destroying the context with glBitmap calls still
+// queued; the headless context now finishes before it is destroyed).
+TEST(HeadlessCli, ExceptionInDisplayAfterTextIsOneLineNotACrash) {
+  ScratchDir dir("throw");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r = run_process(
+      {gllab::testing::kFixtureLab.string(), "--set", "throw_after_text=1", "--out", out.string()});
+  EXPECT_EQ(r.exit_status, kFailureStatus) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("display() gave up after its label"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

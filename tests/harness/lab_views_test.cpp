@@ -3,6 +3,7 @@
 // tested, and needs a reference image, without editing this file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -22,13 +23,20 @@ struct LabView {
   std::string lab, view;
 };
 
-std::vector<LabView> all_views() {
+// --list-views prints "name" per view, "name expect_error" for an error view
+// (harness/lab.h View::expect_error): those have no reference image and are
+// tested by EveryErrorView below.
+std::vector<LabView> all_views(bool error_views) {
   std::vector<LabView> views;
   for (const std::string& lab : gllab::testing::lab_ids()) {
     const gllab::ProcessResult r = run_process({headless(lab), "--list-views"});
     std::stringstream in(r.out);
-    for (std::string v; std::getline(in, v);) views.push_back({lab, v});
-    if (r.exit_status != 0) views.push_back({lab, "LIST_VIEWS_FAILED"});
+    for (std::string line; std::getline(in, line);) {
+      const std::size_t space = line.find(' ');
+      const bool is_error_view = space != std::string::npos && line.substr(space + 1) == "expect_error";
+      if (is_error_view == error_views) views.push_back({lab, line.substr(0, space)});
+    }
+    if (r.exit_status != 0 && !error_views) views.push_back({lab, "LIST_VIEWS_FAILED"});
   }
   return views;
 }
@@ -89,7 +97,37 @@ TEST_P(EveryLabView, ThreeHeadlessRunsAreByteIdentical) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Labs, EveryLabView, ::testing::ValuesIn(all_views()), name_of);
+INSTANTIATE_TEST_SUITE_P(Labs, EveryLabView, ::testing::ValuesIn(all_views(false)), name_of);
+
+// An error view exits 1 headless with one error line on stderr and writes no
+// image; labrun passes it (and reports the line); it has no reference image.
+class EveryErrorView : public ::testing::TestWithParam<LabView> {};
+
+constexpr int kFrameErrorStatus = 1;  // headless --help: a GL or GLU error in the frame
+
+TEST_P(EveryErrorView, ExitsOneWithOneErrorLineAndNoImage) {
+  ScratchDir dir("error_view");
+  const auto out = dir / "x.png";
+  const gllab::ProcessResult r =
+      run_process({headless(GetParam().lab), "--view", GetParam().view, "--out", out.string()});
+  EXPECT_EQ(r.exit_status, kFrameErrorStatus) << r.err;
+  EXPECT_NE(r.err.find("view '" + GetParam().view + "': "), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(kSourceDir / "reference_images" /
+                                       (GetParam().lab + "__" + GetParam().view + ".png")));
+}
+
+TEST_P(EveryErrorView, LabrunPassesItAndReportsTheError) {
+  ScratchDir dir("error_view");
+  const gllab::ProcessResult r = run_process({(kBinDir / "labrun").string(), "--labs", GetParam().lab, "--views",
+                                              GetParam().view, "--out", (dir / "out").string()});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("error view, exits 1 as expected: "), std::string::npos) << r.out;
+}
+
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(EveryErrorView);
+INSTANTIATE_TEST_SUITE_P(Labs, EveryErrorView, ::testing::ValuesIn(all_views(true)), name_of);
 
 // The window program draws every view through GLX (--capture-views, one
 // window); under Xvfb the pixels must equal the headless (OSMesa) renders.
@@ -113,7 +151,9 @@ TEST_P(EveryLabWindow, EveryViewUnderXvfbEqualsHeadlessRender) {
   const gllab::ProcessResult list = run_process({headless(lab), "--list-views"});
   std::stringstream views(list.out);
   int compared = 0;
-  for (std::string view; std::getline(views, view); ++compared) {
+  for (std::string view; std::getline(views, view);) {
+    if (view.find(" expect_error") != std::string::npos) continue;  // error views: no picture (EveryErrorView)
+    ++compared;
     const auto window_png = dir / (lab + "__" + view + ".png"), headless_png = dir / "headless.png";
     ASSERT_TRUE(std::filesystem::exists(window_png)) << window_png;
     ASSERT_EQ(run_process({headless(lab), "--view", view, "--out", headless_png.string()}).exit_status, 0);

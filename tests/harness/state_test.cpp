@@ -140,3 +140,25 @@ TEST(ValidateLab, KeyWithUnknownParameterOrNoHandlerIsRejected) {
   lab.keys = {{'+', "more", "count", +1}};
   EXPECT_NO_THROW(gllab::validate_lab(lab));
 }
+
+// An error view (lab.h View::expect_error) is marked in --list-views and
+// --help, and may not be the first view: the window opens there.
+TEST(ValidateLab, ErrorViewIsListedAsSuchAndCannotComeFirst) {
+  gllab::Lab lab;
+  lab.id = "test";
+  lab.title = "test";
+  lab.views = {{"default", "a picture"}, {"broken", "shows an error", true}};
+  lab.display = [](const gllab::State&) {};
+  ASSERT_NO_THROW(gllab::validate_lab(lab));
+  EXPECT_EQ(gllab::list_views_text(lab), "default\nbroken expect_error\n");
+  EXPECT_NE(gllab::views_text(lab).find("shows an error (error view: headless exits 1)"), std::string::npos);
+  std::swap(lab.views[0], lab.views[1]);
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+}
+
+// --print-text is the headless runner's: the window has no stdout to read.
+TEST(Options, PrintTextIsHeadlessOnly) {
+  using gllab::Runner;
+  EXPECT_TRUE(gllab::parse_options({"--print-text", "--out", "x.png"}, Runner::kHeadless).print_text);
+  EXPECT_THROW(gllab::parse_options({"--print-text"}, Runner::kWindow), gllab::UsageError);
+}
