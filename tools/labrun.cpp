@@ -33,10 +33,14 @@ namespace {
 //  - lighting differs between llvmpipe and softpipe by at most 8 per channel;
 //  - softpipe draws one-pixel lines one pixel over (up to 0.4% of a
 //    wireframe view's pixels), which a shift radius of 1 excuses;
-//  - what remains must be under 0.05% of the pixels (131 of 512x512).
+//  - what remains must be under 0.1% of the pixels (262 of 512x512): with
+//    all 17 labs softpipe's worst view left 101 (0.039%), the closest real
+//    mistake 1785; 262 is 2.6x the one and 1/6.8 of the other (it was 0.05%
+//    with labs 01-07, whose worst was 76, a margin of 1.3x once the surface
+//    labs came).
 constexpr int kDefaultChannelThreshold = 24;
 constexpr int kDefaultShiftRadius = 1;
-constexpr double kDefaultMaxDifferingShare = 0.0005;
+constexpr double kDefaultMaxDifferingShare = 0.001;
 
 struct Settings {
   std::vector<std::string> labs;  // empty: all
