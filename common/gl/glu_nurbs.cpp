@@ -28,7 +28,12 @@
 #include "harness/lab.h"
 #include "spline/bspline.h"
 #include "spline/errors.h"
+#include "spline/surface.h"
 #include "spline/trim.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
 
 namespace gllab {
 
@@ -620,6 +625,44 @@ class EvalStateGuard {
   bool active_;
 };
 
+/// GLU 9.0.2 leaks on the path of its lost errors (see "errors GLU finds and
+/// then loses" below): the jump skips the frames that own what the
+/// tessellation allocated. Measured with LeakSanitizer: 34,712 bytes from
+/// operator new and ~1 KB from malloc in libGLU.so for each clockwise outer
+/// loop, with gluDeleteNurbsRenderer called; nothing for a valid trim. A
+/// suppression cannot name the frames (libGLU.so has no symbols) and would
+/// hide every GLU leak. So in a sanitizer build, and only around
+/// gluEndSurface of a surface whose trim loops the core rejects (the inputs
+/// GLU answers with error 28 or 31), LeakSanitizer does not track GLU's
+/// allocations (__lsan_disable: this thread, this call). Every other call,
+/// and all of gllab, stays leak-checked; .ci/lsan.supp names OSMesa only.
+class GluErrorPathLeakExemption {
+ public:
+  explicit GluErrorPathLeakExemption(const BsplineSurface& s) {
+#if defined(__SANITIZE_ADDRESS__)
+    if (s.trims.empty()) return;
+    try {
+      spline::validate_trim_loops(s.trims, spline::uv_domain(s));
+    } catch (const std::invalid_argument&) {
+      __lsan_disable();
+      active_ = true;
+    }
+#else
+    (void)s;
+#endif
+  }
+  ~GluErrorPathLeakExemption() {
+#if defined(__SANITIZE_ADDRESS__)
+    if (active_) __lsan_enable();
+#endif
+  }
+  GluErrorPathLeakExemption(const GluErrorPathLeakExemption&) = delete;
+  GluErrorPathLeakExemption& operator=(const GluErrorPathLeakExemption&) = delete;
+
+ private:
+  bool active_ = false;
+};
+
 }  // namespace
 
 std::vector<GluError> GluNurbs::draw_curve(const BsplineCurve& curve, const std::string& name, RationalFeed feed) {
@@ -643,6 +686,7 @@ std::vector<GluError> GluNurbs::draw_surface(const BsplineSurface& surface, cons
     if (std::string problem = surface_problem(surface, feed); !problem.empty()) call.refuse(problem);
   if (call.failed()) return call.finish();
   gluNurbsProperty(nurbs_, GLU_NURBS_MODE, GLU_NURBS_RENDERER);
+  const GluErrorPathLeakExemption exemption(surface);
   gluBeginSurface(nurbs_);
   feed_surface(nurbs_, surface, feed, false);
   gluEndSurface(nurbs_);
@@ -699,6 +743,7 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
   const EvalStateGuard guard;
   gluNurbsProperty(nurbs_, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
   gluNurbsCallbackData(nurbs_, &sink);
+  const GluErrorPathLeakExemption exemption(surface);
   gluBeginSurface(nurbs_);
   feed_surface(nurbs_, surface, feed, true);
   gluEndSurface(nurbs_);
