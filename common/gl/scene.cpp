@@ -38,19 +38,6 @@ void look_from_above(double elevation, double azimuth) {
   glRotated(-azimuth, 0, 0, 1);
 }
 
-void draw_label(double x, double y, double z, const std::string& text, Rgb colour, int dx, int dy) {
-  GLdouble model[16], projection[16];
-  GLint viewport[4];
-  glGetDoublev(GL_MODELVIEW_MATRIX, model);
-  glGetDoublev(GL_PROJECTION_MATRIX, projection);
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  GLdouble wx = 0, wy = 0, wz = 0;
-  if (gluProject(x, y, z, model, projection, viewport, &wx, &wy, &wz) != GL_TRUE) return;
-  const int left = static_cast<int>(wx + 0.5) - text_width(text) / 2 + dx;
-  const int top = viewport[3] - static_cast<int>(wy + 0.5) - kGlyphHeight / 2 + dy;
-  draw_text(left, top, text, colour);
-}
-
 bool window_pixel(double x, double y, double z, int& px, int& py) {
   GLdouble model[16], projection[16];
   GLint viewport[4];
@@ -62,6 +49,11 @@ bool window_pixel(double x, double y, double z, int& px, int& py) {
   px = static_cast<int>(std::lround(wx));
   py = viewport[3] - static_cast<int>(std::lround(wy));
   return true;
+}
+
+void draw_label(double x, double y, double z, const std::string& text, Rgb colour, int dx, int dy) {
+  int px = 0, py = 0;
+  if (window_pixel(x, y, z, px, py)) draw_text(px - text_width(text) / 2 + dx, py - kGlyphHeight / 2 + dy, text, colour);
 }
 
 void draw_text_panel_at(double x, double y, double z, const std::vector<std::string>& lines,
