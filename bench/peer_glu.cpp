@@ -1,6 +1,6 @@
 // bench/peer_glu.cpp — GLU NURBS in tessellator mode, no GL context (see peers.h).
 //
-// DESIGN.md: GLU_NURBS_TESSELLATOR with GLU_DOMAIN_DISTANCE works without a
+// docs/glu.md: GLU_NURBS_TESSELLATOR with GLU_DOMAIN_DISTANCE works without a
 // context and returns vertices and normals through callbacks; rational points
 // are premultiplied; callbacks are GLAPIENTRY and cast with (_GLUfuncptr).
 #include <GL/gl.h>

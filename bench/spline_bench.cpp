@@ -47,7 +47,7 @@ namespace proto = gllab::bench::prototype;
 
 // ---- agreement tolerances (relative to the largest reference value) ---------
 // Double-precision peers evaluate the same formulas in another order: a few
-// ulps of the data's scale. GLU works in float (DESIGN.md: vertices within
+// ulps of the data's scale. GLU works in float (docs/glu.md: vertices within
 // ~1e-6 of the true surface, normals within 0.02 degrees).
 constexpr double kDoubleRelTolerance = 1e-10;
 constexpr double kFloatRelTolerance = 1e-5;

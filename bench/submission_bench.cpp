@@ -4,6 +4,16 @@
 // run on the same lit torus at about 1k, 10k, 100k and 1M triangles, in an
 // offscreen OSMesa context of 512 x 512 (llvmpipe, the reference renderer).
 //
+// The paths are lab 05's own code, not a copy: the lab defines them in the
+// named namespace lab05 (external linkage) and this program links the lab's
+// object code (CMake target 05_submission_modes_code, bench/CMakeLists.txt).
+// They are declared again below. A C++ function's link name carries its
+// namespace and parameter types, so a declaration whose parameters no longer
+// match the lab's fails the link instead of calling something else (the return
+// type is not part of the name: keep it the lab's). The scene (the
+// projection, light and tilt of the lab's headless default) and the clear
+// colour come from the lab too: lab05::set_up_scene and the lab's init().
+//
 // One iteration = glClear + one draw of the whole mesh + glFinish, timed in
 // wall-clock time (UseRealTime): llvmpipe rasterises on its own threads, which
 // the CPU time of this thread would not see. Counters: Mtri/s (millions of
@@ -28,49 +38,66 @@
 #include <vector>
 
 #include "gl/gl.h"
+#include "harness/lab.h"
 #include "harness/offscreen.h"
 #include "image/image.h"
-#include "gl/scene.h"
-#include "gl/submission.h"
 #include "mesh/indexed_mesh.h"
+
+// Lab 05's functions (labs/05_submission_modes/05_submission_modes.cpp).
+namespace lab05 {
+void set_up_scene(const gllab::State& s);
+GLuint compile_list(const gllab::IndexedMesh& m);
+void fill_buffers(const gllab::IndexedMesh& m, GLuint buffers[2]);
+void draw(int path, const gllab::IndexedMesh& m, GLuint list, const GLuint buffers[2]);
+void release(GLuint list, const GLuint buffers[2]);
+}  // namespace lab05
 
 namespace {
 
-using gllab::Submit;
-using gllab::kSubmitNames;
-using gllab::kSubmitPaths;
 const std::size_t kSizes[] = {1000, 10000, 100000, 1000000};  // asked of torus_with_triangles
 constexpr int kFrame = 512;
+// lab05::draw's paths are numbered as the lab's views, in order: path p is
+// view p, and the view's name names it here. A path the lab adds with its
+// view is timed too.
+std::vector<std::string> g_names;
+int paths() { return int(g_names.size()); }
 
-// One mesh per size, with its list and buffers made before timing. The four
-// paths are lab 05's own code (common/gl/submission.cpp).
-std::vector<gllab::SubmittedMesh> g_meshes;
+// One mesh per size, with its list and buffers made before timing.
+struct Prepared {
+  gllab::IndexedMesh mesh;
+  GLuint list = 0, buffers[2] = {0, 0};
+  std::size_t triangles() const { return mesh.triangle_count(); }
+};
+std::vector<Prepared> g_meshes;
 
-void frame(gllab::SubmittedMesh& m, Submit path) {
+void frame(const Prepared& m, int path) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  m.draw(path);
+  lab05::draw(path, m.mesh, m.list, m.buffers);
   glFinish();
 }
 
-// The scene of lab 05 (its headless default: same projection, light, tilt).
+// Lab 05's init() (depth test, clear colour) and its scene at the headless
+// default (camera, --time 0), in a kFrame x kFrame frame.
 void set_up_scene() {
+  const gllab::Lab lab = gllab::define_lab();
+  lab.init();
+  gllab::State state(lab.views, lab.params);
+  state.width = state.height = kFrame;
   glViewport(0, 0, kFrame, kFrame);
-  gllab::ortho_fit(kFrame, kFrame, 1.7, 1.7);  // lab 05's projection
-  gllab::enable_headlight();  // lab 05's light (common/gl/scene.cpp)
-  glEnable(GL_DEPTH_TEST);
-  glClearColor(0.12f, 0.13f, 0.16f, 1.f);
-  glTranslatef(0.f, -0.15f, 0.f);
-  glRotatef(-55.f, 1.f, 0.f, 0.f);
+  lab05::set_up_scene(state);
+  for (const gllab::View& v : lab.views) g_names.push_back(v.name);
 }
 
-gllab::SubmittedMesh prepare(std::size_t asked) {
-  gllab::SubmittedMesh m(gllab::torus_with_triangles(asked));
-  for (int path = 0; path < kSubmitPaths; ++path) m.prepare(Submit(path));
+Prepared prepare(std::size_t asked) {
+  Prepared m;
+  m.mesh = gllab::torus_with_triangles(asked);
+  m.list = lab05::compile_list(m.mesh);
+  lab05::fill_buffers(m.mesh, m.buffers);
   return m;
 }
 
-std::string run_name(Submit path, std::size_t triangles) {
-  return std::string(kSubmitNames[int(path)]) + "/" + std::to_string(triangles);
+std::string run_name(int path, std::size_t triangles) {
+  return g_names[std::size_t(path)] + "/" + std::to_string(triangles);
 }
 
 // Prints like the console reporter, adds two counters to each row and keeps
@@ -110,7 +137,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (run.error_occurred || c == run.counters.end() || run.counters["Mtri/cpu_s"] == 0) continue;
       const std::string name = run.run_name.function_name;
       const double immediate =
-          rate("immediate" + name.substr(name.find('/')), kWall, run.aggregate_name);
+          rate(g_names[0] + name.substr(name.find('/')), kWall, run.aggregate_name);
       if (immediate > 0) run.counters["x_immediate"] = c->second.value / immediate;
     }
     ConsoleReporter::ReportRuns(out);
@@ -138,14 +165,14 @@ void print_summary(const RatioReporter& reporter, RatioReporter::Clock clock) {
                               ? "Mtri/s, wall clock (what a frame costs), and the ratio to immediate mode:"
                               : "Mtri/s per CPU second of the submitting thread (GL calls + vertex stage), ratio:");
   std::printf("%-12s", "triangles");
-  for (const char* name : kSubmitNames) std::printf(" %22s", name);
+  for (const std::string& name : g_names) std::printf(" %22s", name.c_str());
   std::printf("\n");
-  for (const gllab::SubmittedMesh& m : g_meshes) {
-    const std::size_t t = m.mesh().triangle_count();
-    const double immediate = reporter.summary_rate(run_name(Submit::kImmediate, t), clock);
+  for (const Prepared& m : g_meshes) {
+    const std::size_t t = m.triangles();
+    const double immediate = reporter.summary_rate(run_name(0, t), clock);
     std::printf("%-12zu", t);
-    for (int path = 0; path < kSubmitPaths; ++path) {
-      const double r = reporter.summary_rate(run_name(Submit(path), t), clock);
+    for (int path = 0; path < paths(); ++path) {
+      const double r = reporter.summary_rate(run_name(path, t), clock);
       char cell[32] = "-";
       if (r > 0 && immediate > 0) std::snprintf(cell, sizeof cell, "%.2f (%.2fx)", r, r / immediate);
       else if (r > 0) std::snprintf(cell, sizeof cell, "%.2f", r);
@@ -170,27 +197,27 @@ int main(int argc, char** argv) {
     // Agreement: every path must give immediate mode's pixels exactly.
     bool differ = false;
     std::printf("\nAgreement with immediate mode (one frame each, 512x512 RGBA bytes):\n");
-    for (gllab::SubmittedMesh& m : g_meshes) {
-      frame(m, Submit::kImmediate);
+    for (const Prepared& m : g_meshes) {
+      frame(m, 0);
       const gllab::Image reference = context.read_pixels();
-      for (int path = 1; path < kSubmitPaths; ++path) {
-        frame(m, Submit(path));
+      for (int path = 1; path < paths(); ++path) {
+        frame(m, path);
         const bool same = context.read_pixels().rgba == reference.rgba;
         differ |= !same;
-        std::printf("  %-28s %s\n", run_name(Submit(path), m.mesh().triangle_count()).c_str(),
+        std::printf("  %-28s %s\n", run_name(path, m.triangles()).c_str(),
                     same ? "identical" : "DIFFERS  <-- MISMATCH");
       }
     }
     std::printf("\n");
     std::fflush(stdout);
 
-    for (gllab::SubmittedMesh& m : g_meshes)
-      for (int path = 0; path < kSubmitPaths; ++path)
-        benchmark::RegisterBenchmark(run_name(Submit(path), m.mesh().triangle_count()).c_str(),
+    for (const Prepared& m : g_meshes)
+      for (int path = 0; path < paths(); ++path)
+        benchmark::RegisterBenchmark(run_name(path, m.triangles()).c_str(),
                                      [&m, path](benchmark::State& state) {
-                                       for (auto _ : state) frame(m, Submit(path));
+                                       for (auto _ : state) frame(m, path);
                                        state.counters["Mtri/s"] = benchmark::Counter(
-                                           double(m.mesh().triangle_count()) / 1e6,
+                                           double(m.triangles()) / 1e6,
                                            benchmark::Counter::kIsIterationInvariantRate);
                                      })
             ->UseRealTime()
@@ -202,7 +229,7 @@ int main(int argc, char** argv) {
     print_summary(reporter, RatioReporter::kWall);
     print_summary(reporter, RatioReporter::kCpu);
     benchmark::Shutdown();
-    for (gllab::SubmittedMesh& m : g_meshes) m.release();
+    for (const Prepared& m : g_meshes) lab05::release(m.list, m.buffers);
     if (differ) std::fprintf(stderr, "submission_bench: a path's image differs from immediate mode's\n");
     return differ ? 1 : 0;
   } catch (const std::exception& e) {

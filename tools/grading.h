@@ -54,7 +54,7 @@ struct ViewId {
 /// there is none or a name is not <lab>__<view>.png.
 std::vector<ViewId> reference_views(const std::filesystem::path& refs);
 
-/// Keeps the views whose lab matches one of `labs` ("13" or "13_bspline_curves")
+/// Keeps the views whose lab matches one of `labs` ("13" or "15_bspline_curves")
 /// and whose view is in `views` (empty: all). Throws UsageError for a lab or
 /// view that matches nothing, naming it and what exists.
 std::vector<ViewId> select_views(const std::vector<ViewId>& all, const std::vector<std::string>& labs,

@@ -3,7 +3,7 @@
 //   labgrade --build DIR    render every view with DIR's headless programs and grade them
 //   labgrade --images DIR   grade a folder of <lab>__<view>.png
 //   labgrade --class DIR    grade every submission (build or image folder) in DIR: one CSV
-//   options: --labs 13,18  --views a,b  --jobs N  --report DIR  --out DIR  --refs DIR
+//   options: --labs 15,22  --views a,b  --jobs N  --report DIR  --out DIR  --refs DIR
 //            --env NAME=VALUE  --timeout SECONDS  --csv FILE  --quiet
 //
 // Exit status: 0 every view passed, 1 some failed, 2 usage or input error.
@@ -50,7 +50,7 @@ const char kUsage[] =
     "  --images DIR       a folder of PNGs named <lab>__<view>.png\n"
     "  --class DIR        every folder in DIR is one student's build or image folder;\n"
     "                     writes one CSV: a row per student, a column per lab\n"
-    "  --labs 13,18       only these labs (number or folder name)\n"
+    "  --labs 15,22       only these labs (number or folder name)\n"
     "  --views a,b        only these views\n"
     "  --jobs N           renders at once (default: the number of cores)\n"
     "  --report DIR       write DIR/index.html (reference, submission, heat map per\n"
@@ -137,7 +137,7 @@ class Console {
   void operator()(const ProgressEvent& e) {
     if (quiet_) return;
     if (tty_) {
-      // One line, rewritten: "[ 23/98] 13_bspline_curves__knot_insertion"
+      // One line, rewritten: "[ 23/98] 15_bspline_curves__knot_insertion"
       std::fprintf(stderr, "\r\033[K[%3d/%d] %s %s", e.done, e.total, e.finished ? "done" : "rendering",
                    e.view->name().c_str());
       if (e.done == e.total && e.finished) std::fputs("\r\033[K", stderr);

@@ -3,7 +3,7 @@
 // lab view has one and every one a view (--check-references). Grading renders
 // against them is labgrade's job (tools/labgrade.cpp, `./lab run`).
 //
-//   labrun --update-references [--labs 01,13] [--views NAME,...] [--refs DIR] [--env NAME=VALUE]...
+//   labrun --update-references [--labs 01,15] [--views NAME,...] [--refs DIR] [--env NAME=VALUE]...
 //   labrun --check-references  [--bin DIR] [--refs DIR]
 //
 // An error view (harness/lab.h View::expect_error; --list-views prints
@@ -107,7 +107,7 @@ Settings parse(int argc, char** argv) {
     else if (a == "--check-references") s.check = true;
     else if (a == "--help" || a == "-h") {
       std::puts(
-          "usage: labrun --update-references [--labs 01,13] [--views NAME,...] [--refs DIR]\n"
+          "usage: labrun --update-references [--labs 01,15] [--views NAME,...] [--refs DIR]\n"
           "              [--env NAME=VALUE]...\n"
           "       labrun --check-references [--bin DIR] [--refs DIR]\n\n"
           "  --update-references  render every view of the labs with build/bin/<lab>_headless\n"
@@ -126,8 +126,9 @@ Settings parse(int argc, char** argv) {
 
 fs::path renderer_of(const Settings& s, const std::string& lab) { return s.bin / (lab + "_headless"); }
 
-// One line of --list-views: "name", or "name expect_error" for an error view
-// (harness/lab.h View::expect_error: headless it exits 1, it has no reference).
+// One line of --list-views: "name", then optionally "expect_error" for an
+// error view (harness/lab.h kErrorView: headless it exits 1, it has no
+// reference) and "same_as=OTHER" (View::same_as, read by the tests).
 struct ViewEntry {
   std::string name;
   bool expect_error = false;
@@ -141,9 +142,14 @@ std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
   for (const std::string& line : split(r.out, '\n')) {
     const std::vector<std::string> words = split(line, ' ');
     if (words.empty()) continue;
-    if (words.size() > 2 || (words.size() == 2 && words[1] != "expect_error"))
-      throw UsageError(lab + ": --list-views printed '" + line + "' (expected a name, optionally 'expect_error')");
-    if (s.views.empty() || s.views.count(words[0])) views.push_back({words[0], words.size() == 2});
+    bool expect_error = false;
+    for (std::size_t k = 1; k < words.size(); ++k) {
+      if (words[k] == "expect_error") expect_error = true;
+      else if (words[k].rfind("same_as=", 0) != 0)
+        throw UsageError(lab + ": --list-views printed '" + line +
+                         "' (expected a name, optionally 'expect_error' and 'same_as=OTHER')");
+    }
+    if (s.views.empty() || s.views.count(words[0])) views.push_back({words[0], expect_error});
   }
   return views;
 }

@@ -1,12 +1,12 @@
 // common/gl/glu_compare.h — how far GLU's curve is from the own core's.
 //
 //   gllab::GluNurbs glu(props);                      // GLU_DOMAIN_DISTANCE: numeric, no context needed
-//   gllab::GluCurveDifference d = gllab::compare_with_glu(glu, curve, "seed curve");
+//   gllab::GluCurveDifference d = gllab::compare_with_glu(glu, curve, "lab curve");
 //   d.max_distance;                                  // |GLU vertex - C(u)|, largest over GLU's vertices
 //
 // GLU tessellates the curve in capture mode (GluNurbs::capture_curve); every
 // vertex comes back with GLU's own parameter u (the Greville texture map), and
-// the core evaluates the curve at that u (spline::curve_point). Labs 13 and 14
+// the core evaluates the curve at that u (spline::curve_point). Labs 15 and 16
 // plot (draw_glu_difference) and print the result; their tests assert on it.
 #pragma once
 
@@ -23,7 +23,7 @@
 namespace gllab {
 
 /// GLU's u arrives through a float texture map: at a knot where the curve
-/// jumps (multiplicity p + 1, seed 003 case D) a vertex this close to it
+/// jumps (multiplicity p + 1, case D of lab 15) a vertex this close to it
 /// (relative to the domain width) is compared with both one-sided limits
 /// there, and the nearer counts: GLU ends one piece and starts the next at
 /// the same u. Measured: GLU's u are off by at most ~1e-6 of the domain.
@@ -35,7 +35,7 @@ inline constexpr double kGluKnotSnap = 1e-5;
 /// u_step 8..64: at most 20.1 (GLU evaluates in float, and its u comes back
 /// through a float map, so a steep curve adds |C'| times u's rounding). 64
 /// leaves a factor 3; a control point moved by 1 % of the size is thousands
-/// of spacings off. Labs 13 and 14 and their tests use it.
+/// of spacings off. Labs 15 and 16 and their tests use it.
 inline constexpr double kGluAgreement = 64;
 
 struct GluCurveDifference {

@@ -1,6 +1,6 @@
 // common/gl/glu_nurbs.cpp — see glu_nurbs.h.
 //
-// Facts this file depends on (DESIGN.md "GLU NURBS", and measured with GLU
+// Facts this file depends on (docs/glu.md, and measured with GLU
 // 9.0.2 where marked):
 //  - rational points go premultiplied, (w x, w y, w z, w), trims (w u, w v, w);
 //  - callbacks are GLAPIENTRY functions cast to _GLUfuncptr (no CALLBACK macro);
@@ -16,8 +16,6 @@
 //    strips for GLU_OUTLINE_PATCH).
 #include "gl/glu_nurbs.h"
 
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -25,6 +23,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "gl/glu_errors.h"
 #include "harness/lab.h"
 #include "spline/bspline.h"
 #include "spline/errors.h"
@@ -88,20 +87,11 @@ struct Call {
 };
 thread_local Call* t_call = nullptr;
 
-std::string glu_text(GLenum code) {
-  const auto* text = reinterpret_cast<const char*>(gluErrorString(code));
-  return text ? text : "no text";
-}
-
 GluError make_error(const std::string& what, GLenum code) {
   GluError e;
   e.code = code;
-  if (code >= GLU_NURBS_ERROR1 && code <= GLU_NURBS_ERROR37) {
-    e.nurbs_error = static_cast<int>(code - GLU_NURBS_ERROR1) + 1;
-    e.message = what + ": GLU NURBS error " + std::to_string(e.nurbs_error) + " (" + glu_text(code) + ")";
-  } else {
-    e.message = what + ": GLU error " + glu_enum_name(code) + " (" + glu_text(code) + ")";
-  }
+  if (code >= GLU_NURBS_ERROR1 && code <= GLU_NURBS_ERROR37) e.nurbs_error = static_cast<int>(code - GLU_NURBS_ERROR1) + 1;
+  e.message = what + ": " + glu_error_text(code);
   return e;
 }
 
@@ -114,8 +104,8 @@ void GLAPIENTRY on_glu_error(GLenum code) {
   }
 }
 
-// GLU error n that GLU raised with longjmp and never reported (see
-// __longjmp_chk at the end of this file): recorded for the call in progress.
+// GLU error n that GLU raised with longjmp and never reported (glu_errors.h:
+// "errors GLU finds and then loses"): recorded for the call in progress.
 void record_lost_error(int value) {
   if (t_call && value >= 1 && value <= static_cast<int>(GLU_NURBS_ERROR37 - GLU_NURBS_ERROR1) + 1)
     t_call->errors.push_back(make_error(t_call->what, GLU_NURBS_ERROR1 + static_cast<GLenum>(value) - 1));
@@ -126,8 +116,12 @@ class CallScope {
   explicit CallScope(std::string what) : previous_(t_call) {
     call_.what = std::move(what);
     t_call = &call_;
+    previous_sink_ = set_lost_glu_error_sink(record_lost_error);
   }
-  ~CallScope() { t_call = previous_; }
+  ~CallScope() {
+    set_lost_glu_error_sink(previous_sink_);
+    t_call = previous_;
+  }
   CallScope(const CallScope&) = delete;
   CallScope& operator=(const CallScope&) = delete;
 
@@ -165,6 +159,7 @@ class CallScope {
  private:
   Call call_;
   Call* previous_;
+  LostGluErrorSink previous_sink_ = nullptr;
 };
 
 // ---- checks GLU cannot make ------------------------------------------------------
@@ -475,6 +470,28 @@ SamplingMatrices SamplingMatrices::from_gl() {
   return m;
 }
 
+GluNurbsProperties GluNurbsProperties::of(GLUnurbs* nurb) {
+  GluNurbsProperties p;
+  const auto get = [nurb](GLenum property) {
+    GLfloat v = 0;
+    gluGetNurbsProperty(nurb, property, &v);
+    return v;
+  };
+  p.sampling_method = static_cast<GLenum>(get(GLU_SAMPLING_METHOD));
+  p.sampling_tolerance = get(GLU_SAMPLING_TOLERANCE);
+  p.parametric_tolerance = get(GLU_PARAMETRIC_TOLERANCE);
+  p.u_step = get(GLU_U_STEP);
+  p.v_step = get(GLU_V_STEP);
+  p.display_mode = static_cast<GLenum>(get(GLU_DISPLAY_MODE));
+  p.culling = get(GLU_CULLING) != 0;
+  p.auto_load_matrix = get(GLU_AUTO_LOAD_MATRIX) != 0;
+  const bool object_space = p.sampling_method == GLU_OBJECT_PATH_LENGTH ||
+                            p.sampling_method == GLU_OBJECT_PARAMETRIC_ERROR;
+  if (object_space) p.auto_load_matrix = false;
+  if (!p.auto_load_matrix && !object_space && gl_context_current()) p.sampling_matrices = SamplingMatrices::from_gl();
+  return p;
+}
+
 std::size_t CurveCapture::vertex_count() const {
   std::size_t n = 0;
   for (const GluPrimitive& p : primitives) n += p.count;
@@ -625,8 +642,8 @@ class EvalStateGuard {
   bool active_;
 };
 
-/// GLU 9.0.2 leaks on the path of its lost errors (see "errors GLU finds and
-/// then loses" below): the jump skips the frames that own what the
+/// GLU 9.0.2 leaks on the path of its lost errors (glu_errors.cpp, "errors
+/// GLU finds and then loses"): the jump skips the frames that own what the
 /// tessellation allocated. Measured with LeakSanitizer: 34,712 bytes from
 /// operator new and ~1 KB from malloc in libGLU.so for each clockwise outer
 /// loop, with gluDeleteNurbsRenderer called; nothing for a valid trim. A
@@ -636,6 +653,7 @@ class EvalStateGuard {
 /// GLU answers with error 28 or 31), LeakSanitizer does not track GLU's
 /// allocations (__lsan_disable: this thread, this call). Every other call,
 /// and all of gllab, stays leak-checked; .ci/lsan.supp names OSMesa only.
+/// (A lab's own gluEndSurface cannot be wrapped like this: glu_errors.cpp.)
 class GluErrorPathLeakExemption {
  public:
   explicit GluErrorPathLeakExemption(const BsplineSurface& s) {
@@ -770,31 +788,3 @@ SurfaceCapture GluNurbs::capture_surface(const BsplineSurface& surface, const st
 }
 
 }  // namespace gllab
-
-// ---- errors GLU finds and then loses -------------------------------------------
-// GLU 9.0.2 checks trim loops while it tessellates (libnurbs, Subdivider::
-// drawSurfaces and the ccwTurn tests): a trim curve that does not meet the
-// next piece gives NURBS error 31, a loop running the wrong way (a clockwise
-// outer loop) or two loops that cross give error 28. It leaves the
-// tessellation with longjmp, to a setjmp GLU made inside its own
-// out-of-line mysetjmp() (libnurbs/internals/mysetjmp.h), a function that has
-// already returned. The jump lands in that dead frame, whose return address
-// the tessellation has overwritten with its own, and comes back as if the
-// tessellation had finished: the error callback is never called and the
-// surface silently disappears (measured with gdb, libglu1-mesa 9.0.2-1.1: the
-// longjmp carries 28 or 31, no callback follows, no vertex is drawn).
-// GLU jumps through glibc's fortified __longjmp_chk (nm -D libGLU.so.1 lists
-// it, and no other longjmp). The definition below, linked into every program
-// that uses GluNurbs, is found before glibc's; during a GluNurbs call it
-// records the code as the call's error, exactly as the callback would have,
-// and then jumps as glibc would (the next definition, dlsym RTLD_NEXT: glibc,
-// or the AddressSanitizer's). Outside a call it only passes the jump on.
-// The parameter is glibc's struct __jmp_buf_tag[1], passed on untouched.
-extern "C" [[noreturn]] void __longjmp_chk(void* env, int value) {
-  using LongJump = void (*)(void*, int);
-  static const auto next = reinterpret_cast<LongJump>(dlsym(RTLD_NEXT, "__longjmp_chk"));
-  gllab::record_lost_error(value);
-  if (!next) std::abort();  // no glibc: cannot happen in a program that links GLU
-  next(env, value);
-  std::abort();  // __longjmp_chk does not return
-}

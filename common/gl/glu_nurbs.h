@@ -7,7 +7,7 @@
 //   gllab::SurfaceCapture c = glu.capture_surface(hill, "trimmed hill");
 //   c.mesh.triangles.size();                       // triangles exactly as GLU emitted them
 //
-// What the wrapper does so that no lab converts by hand (DESIGN.md "GLU NURBS"):
+// What the wrapper does so that no lab converts by hand (docs/glu.md):
 //  - curves go to gluNurbsCurve as GL_MAP1_VERTEX_3 (polynomial) or
 //    GL_MAP1_VERTEX_4 (rational, premultiplied (w x, w y, w z, w)); surfaces
 //    to gluNurbsSurface as GL_MAP2_VERTEX_3 / GL_MAP2_VERTEX_4; order = p + 1;
@@ -23,7 +23,7 @@
 //
 // GLU 9.0.2 finds a misoriented or crossing trim loop (NURBS error 28) and an
 // unconnected trim curve (error 31) but loses both on the way to its error
-// callback (a longjmp into a dead frame; glu_nurbs.cpp, "errors GLU finds and
+// callback (a longjmp into a dead frame; glu_errors.h, "errors GLU finds and
 // then loses"). The wrapper catches that longjmp and reports them like any
 // other GLU error.
 //
@@ -91,6 +91,13 @@ struct GluNurbsProperties {
   /// properties() reports false.
   bool auto_load_matrix = true;
   std::optional<SamplingMatrices> sampling_matrices;
+
+  /// The properties a GLU NURBS object has now (gluGetNurbsProperty): what a
+  /// lab set on its own renderer with gluNurbsProperty, so that a capture
+  /// (GluNurbs below) samples exactly as the lab's drawing does. With
+  /// auto-load off the current GL matrices become the sampling matrices
+  /// (GLU has no call that reads its own back).
+  static GluNurbsProperties of(GLUnurbs* nurb);
 };
 
 /// "GLU_DOMAIN_DISTANCE" for GLU_DOMAIN_DISTANCE (and the other method and
@@ -104,7 +111,7 @@ bool samples_in_screen_space(GLenum sampling_method);
 enum class RationalFeed {
   /// (w x, w y, w z, w) and trims (w u, w v, w): what GLU expects.
   kPremultiplied,
-  /// The classic mistake, on purpose (lab 14 shows it): (x, y, z, w) passed
+  /// The classic mistake, on purpose (lab 16 shows it): (x, y, z, w) passed
   /// as if premultiplied, so GLU draws the curve with control points P / w.
   /// Applies to every rational array of the call, trim curves included.
   kMistakeNotPremultiplied,
@@ -185,7 +192,7 @@ class GluNurbs {
   const GluNurbsProperties& properties() const;
 
   /// Rendering mode (GLU_NURBS_RENDERER): GLU draws with the current GL state.
-  /// Surfaces are lit only with glEnable(GL_AUTO_NORMAL) (DESIGN.md). `name`
+  /// Surfaces are lit only with glEnable(GL_AUTO_NORMAL) (docs/glu.md). `name`
   /// names the object in error lines. Returns the errors (also reported).
   /// Needs a current GL context (else one frame error, nothing drawn).
   /// A 2D curve (dimension 2, z = 0) is fed as it is, (x, y, 0) or

@@ -34,8 +34,8 @@ void leave_panels(int width, int height);
 
 /// Text centred over the panel on text line `line`: line 0 is the first line
 /// inside its top edge, line -1 the last line inside its bottom edge (-2 the
-/// one above it, ...). Drawn in window pixels whatever the current viewport
+/// one above it, ...), white unless a colour is given. Drawn in window pixels whatever the current viewport
 /// and scissor box; both are left as they were.
-void draw_panel_caption(const Panel& panel, int line, const std::string& text, Rgb colour);
+void draw_panel_caption(const Panel& panel, int line, const std::string& text, Rgb colour = {1.f, 1.f, 1.f});
 
 }  // namespace gllab

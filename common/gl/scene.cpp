@@ -4,8 +4,22 @@
 #include <cmath>
 
 #include "gl/gl.h"
+#include "harness/lab.h"
 
 namespace gllab {
+
+void apply_orbit(const State& s) {
+  const Camera& c = s.camera;
+  if (c == Camera{}) return;  // the lab's camera, untouched: the reference images
+  GLint mode = 0;
+  glGetIntegerv(GL_MATRIX_MODE, &mode);
+  glMatrixMode(GL_PROJECTION);
+  glScaled(c.zoom, c.zoom, 1);  // x and y only: the depth range stays the lab's
+  glMatrixMode(GL_MODELVIEW);
+  glRotated(c.pitch, 1, 0, 0);
+  glRotated(c.yaw, 0, 1, 0);
+  glMatrixMode(static_cast<GLenum>(mode));
+}
 
 void ortho_fit(int width, int height, double half_width, double half_height, double depth) {
   const double aspect = static_cast<double>(width) / height;

@@ -8,6 +8,8 @@
 
 namespace gllab {
 
+class State;
+
 /// Orthographic projection showing at least [-half_width, half_width] x
 /// [-half_height, half_height] with square pixels in a width x height
 /// viewport; z from -depth to depth. Leaves GL_MODELVIEW current and identity.
@@ -16,6 +18,15 @@ void ortho_fit(int width, int height, double half_width, double half_height, dou
 /// One white directional light from the upper left front, with
 /// GL_COLOR_MATERIAL (glColor sets ambient and diffuse) and GL_NORMALIZE.
 void enable_headlight();
+
+/// The orbit camera of a 3D view (harness/lab.h kOrbit, State::camera), on
+/// top of the lab's own camera: call it right after the projection (and the
+/// headlight, which then stays with the eye), before the lab's own turns.
+/// It scales the projection by camera.zoom in x and y, then turns the
+/// modelview by camera.pitch about x and camera.yaw about y, about the eye
+/// space origin: the centre of an ortho_fit view. The default camera changes
+/// nothing, so the reference images are the lab's own camera.
+void apply_orbit(const State& s);
 
 /// Turns the current modelview so that a z-up scene is seen from `elevation`
 /// degrees above its xy-plane (90: straight down), turned by `azimuth`

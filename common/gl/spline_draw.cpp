@@ -9,6 +9,7 @@
 #include "gl/pick.h"
 #include "gl/scene.h"
 #include "spline/curvature.h"
+#include "spline/parameterization.h"
 
 namespace gllab {
 
@@ -144,6 +145,20 @@ void draw_control_points_at(const State& state, const std::string& list, const s
   draw_dots(at, colour, size);
   for (std::size_t k = 0; k < indices.size() && k < at.size(); ++k)
     if (indices[k] < count) register_pickable(list, indices[k], at[k], dimension);
+}
+
+void draw_handles(const State& state, const std::string& list,
+                  const std::vector<std::array<std::size_t, 2>>& handles, Rgb line, Rgb points) {
+  const std::vector<spline::Vec3>& p = state.points(list);
+  for (const auto& [base, tip] : handles) draw_polyline({p.at(base), p.at(tip)}, line, 2.f);
+  draw_control_points(state, list, points);
+}
+
+void draw_control_points_at(const State& state, const std::string& list,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size) {
+  std::vector<std::size_t> all(state.points(list).size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+  draw_control_points_at(state, list, all, at, colour, size);
 }
 
 void draw_control_polygon(const std::vector<spline::Vec3>& P, Rgb colour) {
@@ -289,6 +304,28 @@ void draw_curvature_comb(const std::function<std::array<spline::Vec3, 3>(double)
   draw_polyline(tips, colour, 1.f);
 }
 
+void draw_curvature_comb(const spline::CubicSpline& spline, double scale, Rgb colour,
+                         int teeth_per_segment) {
+  const auto derivatives = [&](double u) {
+    return std::array<spline::Vec3, 3>{spline::spline_point(spline, u), spline::spline_derivative(spline, u, 1),
+                                       spline::spline_derivative(spline, u, 2)};
+  };
+  draw_curvature_comb(derivatives, spline.t.front(), spline.t.back(), scale, colour,
+                      teeth_per_segment * int(spline.segments()));
+}
+
+void draw_curve(const spline::CubicSpline& spline, Rgb colour, float width, double tolerance) {
+  draw_curve([&](double u) { return spline::spline_point(spline, u); }, spline.t.front(), spline.t.back(),
+             colour, width, tolerance);
+}
+
+void draw_sampled_curve(const std::function<spline::Vec3(double)>& curve, double a, double b,
+                        Rgb colour, int samples, float width) {
+  std::vector<spline::Vec3> points;
+  for (int k = 0; k <= samples; ++k) points.push_back(curve(k == samples ? b : a + (b - a) * k / samples));
+  draw_polyline(points, colour, width);
+}
+
 // ---- meshes -----------------------------------------------------------------------
 
 void draw_mesh(const spline::Mesh& mesh) {
@@ -305,7 +342,7 @@ void draw_mesh(const spline::Mesh& mesh) {
 // glPolygonOffset(factor, units) for draw_surface: lines drawn on a surface
 // must win the depth test on llvmpipe, softpipe and GLX alike. A flattened
 // iso-curve's chords sag below the curved surface; with (1, 1) one pixel of
-// lab 15's iso_lines_normals went to the surface under GLX and to the line
+// lab 17's iso_lines_normals went to the surface under GLX and to the line
 // under OSMesa. (2, 4) clears it (and softpipe's line pixels).
 constexpr GLfloat kSurfaceOffsetFactor = 2.f, kSurfaceOffsetUnits = 4.f;
 
@@ -350,6 +387,25 @@ void draw_mesh_wireframe(const spline::Mesh& mesh, Rgb colour, float width) {
       vertex(mesh.positions[t[(e + 1) % 3]]);
     }
   glEnd();
+}
+
+void draw_trim_loops(const std::vector<spline::TrimLoop>& loops, Rgb pwl, Rgb polynomial, Rgb rational) {
+  for (const spline::TrimLoop& loop : loops)
+    for (const spline::TrimPiece& piece : loop.pieces) {
+      std::vector<spline::Vec3> line;
+      for (spline::Vec2 q : piece.polyline) line.push_back({q.x, q.y, 0});
+      const Rgb c = !piece.curve ? pwl : piece.curve->rational() ? rational : polynomial;
+      if (piece.curve) {
+        draw_curve(*piece.curve, c);
+        const auto [a, b] = spline::domain(*piece.curve);  // the arrow on its last 2 %
+        line = {spline::curve_point(*piece.curve, b - 0.02 * (b - a)), spline::curve_point(*piece.curve, b)};
+      } else {
+        draw_polyline(line, c);
+      }
+      const spline::Vec3 tip = line.back(), d = 0.03 * normalized(tip - line[line.size() - 2]);
+      const spline::Vec3 n{-d.y, d.x, 0};
+      draw_polyline({tip - d + 0.6 * n, tip, tip - d - 0.6 * n}, c, 2.f);
+    }
 }
 
 void draw_mesh_faces(const spline::Mesh& mesh, const std::vector<std::size_t>& faces, Rgb colour, float width) {
@@ -460,6 +516,16 @@ double plot_ceiling(double x) {
   return 10 * e;
 }
 
+double max_difference(const std::function<double(double)>& f, const std::function<double(double)>& g,
+                      double x0, double x1, int samples) {
+  double largest = 0;
+  for (int k = 0; k <= samples; ++k) {
+    const double x = x0 + (x1 - x0) * k / samples;
+    largest = std::max(largest, std::fabs(f(x) - g(x)));
+  }
+  return largest;
+}
+
 // ---- labels ------------------------------------------------------------------------
 
 std::string knot_vector_text(const std::vector<double>& U) {
@@ -472,6 +538,90 @@ std::string knot_vector_text(const std::vector<double>& U) {
     text += number + (m > 1 ? "x" + std::to_string(m) : "");
   }
   return text;
+}
+
+std::string xy_text(const spline::Vec3& p) { return format_text("(%.5g, %.5g)", p.x, p.y); }
+
+std::string points_text(const std::vector<spline::Vec3>& points) {
+  std::string text;
+  for (const spline::Vec3& p : points) text += (text.empty() ? "" : " ") + xy_text(p);
+  return text;
+}
+
+std::vector<Rgb> height_colours(const std::vector<HeightColour>& ramp, const spline::Mesh& mesh) {
+  std::vector<Rgb> colours;
+  for (const spline::Vec3& p : mesh.positions) {
+    std::size_t k = 1;
+    while (k + 1 < ramp.size() && p.z > ramp[k].height) ++k;
+    const HeightColour &a = ramp[k - 1], &b = ramp[k];
+    const float f = float(std::clamp((p.z - a.height) / (b.height - a.height), 0.0, 1.0));
+    const Rgb &c0 = a.colour, &c1 = b.colour;
+    colours.push_back({c0.r + f * (c1.r - c0.r), c0.g + f * (c1.g - c0.g), c0.b + f * (c1.b - c0.b)});
+  }
+  return colours;
+}
+
+std::vector<std::string> bezier_joint_report(const std::vector<spline::BezierCurve>& segments) {
+  std::vector<std::string> lines;
+  for (std::size_t i = 1; i < segments.size(); ++i) {
+    const spline::BezierCurve &before = segments[i - 1], &after = segments[i];
+    const spline::Vec3 d1a = spline::bezier_end_derivative(before, 1);
+    const spline::Vec3 d1b = spline::bezier_start_derivative(after, 1);
+    const spline::Vec3 d2a = spline::bezier_end_derivative(before, 2);
+    const spline::Vec3 d2b = spline::bezier_start_derivative(after, 2);
+    const double angle = std::fabs(std::atan2(cross(d1a, d1b).z, dot(d1a, d1b))) * 180 / M_PI;
+    lines.push_back(format_text("b%zu: angle %5.1f deg  |S'| %.2f|%.2f  S'' jump %.2f",
+                                (before.P.size() - 1) * i, angle, norm(d1a), norm(d1b), norm(d2b - d2a)));
+  }
+  return lines;
+}
+
+std::string unit_parameters_text(const std::vector<double>& t) {
+  std::string r;
+  for (double u : spline::unit_interval_parameters(t))
+    r += std::lround(u * 100) >= 100 ? " 1" : format_text(" .%02ld", std::lround(u * 100));
+  return r.substr(1);
+}
+
+std::string polynomial_text(const std::vector<double>& c, const std::string& x) {
+  const char* powers[] = {"", "", "²", "³"};
+  std::string r;
+  for (int j = int(c.size()) - 1; j >= 0; --j) {
+    if (std::fabs(c[j]) < 1e-12) continue;
+    r += r.empty() ? (c[j] < 0 ? "-" : "") : (c[j] < 0 ? " - " : " + ");
+    if (std::fabs(c[j]) != 1 || j == 0) r += format_text("%.4g", std::fabs(c[j]));
+    if (j > 0) r += x + (j < 4 ? powers[j] : "^" + std::to_string(j));
+  }
+  return r.empty() ? "0" : r;
+}
+
+std::string newton_form_text(const std::vector<double>& a, const std::vector<double>& nodes) {
+  std::string sum, product;
+  for (std::size_t i = 0; i < a.size() && i < nodes.size(); ++i) {
+    sum += (i ? " + " : "") + format_text("%.4g", a[i]) + product;
+    product += format_text("(x-%.4g)", nodes[i]);
+  }
+  return sum;
+}
+
+void draw_divided_differences(const std::vector<double>& nodes,
+                              const std::vector<std::vector<double>>& table, double x, double y,
+                              Rgb colour, int fresh, Rgb fresh_colour) {
+  const auto cell = [](const std::string& v) {
+    return v + std::string(std::max<std::size_t>(1, 9 - v.size()), ' ');
+  };
+  std::vector<std::string> lines = {"f[t_j..t_(j+k)]; row 0 holds a_k", cell("t_j")};
+  for (std::size_t k = 0; k < table.size(); ++k) lines[1] += cell("k=" + std::to_string(k));
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    lines.push_back(cell(format_text("%.4g", nodes[j])));
+    for (std::size_t k = 0; k + j < table.size(); ++k) lines.back() += cell(format_text("%.4g", table[k][j]));
+  }
+  draw_text_panel_at(x, y, 0, lines, {colour});
+  int px = 0, py = 0;  // the panel's top-left pixel: draw_text_panel has 6 px padding
+  if (fresh < 0 || !window_pixel(x, y, 0, px, py)) return;
+  for (int k = 0; k <= fresh; ++k)
+    draw_text(px + 6 + 9 * (k + 1) * kGlyphWidth, py + 6 + kGlyphHeight * (fresh - k + 2),
+              format_text("%.4g", table[k][fresh - k]), fresh_colour);
 }
 
 }  // namespace gllab

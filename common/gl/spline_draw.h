@@ -21,6 +21,7 @@
 #include "harness/lab.h"
 #include "spline/bezier.h"
 #include "spline/bspline.h"
+#include "spline/cubic_spline.h"
 #include "spline/tessellate.h"
 #include "spline/types.h"
 #include "spline/vec.h"
@@ -65,6 +66,9 @@ void draw_control_points(const State& state, const std::string& list, const std:
 /// point above its grid position and reads only its z.
 void draw_control_points_at(const State& state, const std::string& list, const std::vector<std::size_t>& indices,
                             const std::vector<spline::Vec3>& at, Rgb colour, float size = 9.f);
+/// The same for every point of the list: point k drawn at at[k].
+void draw_control_points_at(const State& state, const std::string& list,
+                            const std::vector<spline::Vec3>& at, Rgb colour, float size = 9.f);
 
 /// A control polygon: a thin dashed line through P and a dot at each point
 /// (not draggable; draw_control_points makes them draggable).
@@ -78,6 +82,12 @@ void draw_convex_hull(const std::vector<spline::Vec3>& P, Rgb colour, float fill
 /// A surface's control net: its rows and columns (P[i * columns + j]) as
 /// thin lines, a dot at each point.
 void draw_control_net(const std::vector<spline::Vec3>& P, int rows, int columns, Rgb colour);
+
+/// Handles of the point list `list`: a line from point base to point tip for
+/// each pair {base, tip} (tangent handles), then every point of the list as
+/// draw_control_points draws it, draggable.
+void draw_handles(const State& state, const std::string& list,
+                  const std::vector<std::array<std::size_t, 2>>& handles, Rgb line, Rgb points);
 
 /// A line from `from` to `to` with an arrow head of `head_px` pixels at `to`
 /// (sized on screen under the current matrices, like draw_knot_markers):
@@ -95,6 +105,15 @@ void draw_curve(const spline::BsplineCurve& curve, Rgb colour, float width = 2.f
 /// A Bézier curve over its interval.
 void draw_curve(const spline::BezierCurve& curve, Rgb colour, float width = 2.f, double tolerance = kDrawTolerance);
 
+/// An interpolating cubic spline over [t_0, t_N], from its own evaluator
+/// (spline::spline_point).
+void draw_curve(const spline::CubicSpline& spline, Rgb colour, float width = 2.f,
+                double tolerance = kDrawTolerance);
+/// The curve at `samples` + 1 evenly spaced parameters of [a, b] (the last one
+/// exactly b) as a polyline, not flattened adaptively: two curves drawn this way
+/// land on the same pixels wherever their points agree (lab 13's overlays).
+void draw_sampled_curve(const std::function<spline::Vec3(double)>& curve, double a, double b,
+                        Rgb colour, int samples = 400, float width = 2.f);
 /// A diamond at the curve point of each distinct knot of the domain, with the
 /// knot's multiplicity beside it when it is more than 1.
 void draw_knot_markers(const spline::BsplineCurve& curve, Rgb colour, bool show_multiplicity = true);
@@ -118,7 +137,18 @@ void draw_de_boor(const spline::DeBoorConstruction& construction, Rgb first, Rgb
 void draw_curvature_comb(const std::function<std::array<spline::Vec3, 3>(double)>& derivatives, double a, double b,
                          double scale, Rgb colour, int teeth = 120);
 
+/// The curvature comb of an interpolating cubic spline from its own
+/// derivatives (spline::spline_derivative), `teeth_per_segment` teeth per segment.
+void draw_curvature_comb(const spline::CubicSpline& spline, double scale, Rgb colour,
+                         int teeth_per_segment = 30);
 // ---- meshes -----------------------------------------------------------------------
+
+/// The trim loops of a surface in its (u, v) plane (z = 0, under the current
+/// matrices): each piece in the colour of the GLU call that takes it,
+/// `pwl` for a gluPwlCurve polyline, `polynomial` for a GLU_MAP1_TRIM_2 curve,
+/// `rational` for GLU_MAP1_TRIM_3, with an arrowhead where it ends, so that
+/// the direction GLU's keep-left rule reads shows.
+void draw_trim_loops(const std::vector<spline::TrimLoop>& loops, Rgb pwl, Rgb polynomial, Rgb rational);
 
 /// The triangles with their per-vertex normals (lit as the caller set up).
 void draw_mesh(const spline::Mesh& mesh);
@@ -181,14 +211,61 @@ void draw_plot_ticks(const PlotFrame& frame, const std::vector<double>& xs, Rgb 
 
 /// 1, 2 or 5 times a power of ten, the smallest such value >= x: a plot top
 /// that reads well (3.7e-7 -> 5e-7); 1 when x is not > 0 or not finite (a
-/// plot of zeros). Labs 13 and 14 scale their GLU-difference and error plots
+/// plot of zeros). Labs 15 and 16 scale their GLU-difference and error plots
 /// with it.
 double plot_ceiling(double x);
+/// The largest |f(x) - g(x)| at `samples` + 1 evenly spaced x from x0 to x1,
+/// x_k = x0 + (x1 - x0) k / samples: the error a plot's caption prints (lab 10's
+/// polynomial and spline against Runge's function).
+double max_difference(const std::function<double(double)>& f, const std::function<double(double)>& g,
+                      double x0, double x1, int samples);
 
 // ---- labels ------------------------------------------------------------------------
 
 /// A knot vector as text, each distinct knot once with "xm" for multiplicity
 /// m > 1, each preceded by a space: " 0x4 0.2 0.4 0.6 0.8 1x4" (%g numbers).
 std::string knot_vector_text(const std::vector<double>& U);
+/// What consecutive Bézier segments share at each joint, one line per joint
+/// b_(n i) (n the degree): the angle between the tangents, the speeds |S'| on
+/// both sides and the jump of S'' (spline::bezier_end_derivative and
+/// bezier_start_derivative): "b3: angle   0.0 deg  |S'| 1.20|1.20  S'' jump 2.30".
+std::vector<std::string> bezier_joint_report(const std::vector<spline::BezierCurve>& segments);
+/// Parameters t rescaled to [0, 1] (spline::unit_interval_parameters) as text,
+/// two decimals without the leading zero: ".00 .24 .29 ... 1" (lab 13's nodes).
+std::string unit_parameters_text(const std::vector<double>& t);
+/// The polynomial c[0] + c[1] x + ... as text, highest power first, as the
+/// lecture notes print them: {1, -0.6, 0.1} -> "0.1x² - 0.6x + 1" (%.4g; zero
+/// terms left out, a coefficient 1 or -1 written as a sign; "0" when all are
+/// zero). `x` names the variable ("t"). Labs 10 and 11 print bases with it.
+std::string polynomial_text(const std::vector<double>& c, const std::string& x = "x");
+/// Newton's form sum a_i N_i(x) as text, "1 + 1(x-0) + 0(x-0)(x-2)" for
+/// a = {1, 1, 0} at the nodes {0, 2, 4} (%.4g numbers).
+std::string newton_form_text(const std::vector<double>& a, const std::vector<double>& nodes);
+/// A divided-difference table (spline::NewtonInterpolant::table(): table[k][j]
+/// = f[t_j..t_(j+k)]) as a text panel with its top-left corner at lab point
+/// (x, y): a title line, a header "t_j k=0 k=1 ...", then row j = t_j, f[t_j],
+/// f[t_j, t_(j+1)], ... in columns of 9 characters (%.4g). The entries of node
+/// `fresh` (the diagonal k + j = fresh) are drawn again in `fresh_colour`;
+/// fresh < 0 marks none. Lab 10 grows the table one node at a time.
+void draw_divided_differences(const std::vector<double>& nodes,
+                              const std::vector<std::vector<double>>& table, double x, double y,
+                              Rgb colour, int fresh = -1, Rgb fresh_colour = {1.f, 0.4f, 0.3f});
+
+/// A point's x and y as text, "(6.624, 4.536)" (%.5g numbers), for panels
+/// that print a construction; points_text joins several with spaces.
+std::string xy_text(const spline::Vec3& p);
+std::string points_text(const std::vector<spline::Vec3>& points);
+
+// ---- colours ---------------------------------------------------------------------
+
+/// One stop of a colour ramp by height: a terrain's water, grass, rock, snow.
+struct HeightColour {
+  double height;
+  Rgb colour;
+};
+/// One colour per vertex of the mesh, by its height z (for draw_surface):
+/// blended linearly between the two stops of the ramp around z (stops in
+/// increasing height), the end colours beyond them.
+std::vector<Rgb> height_colours(const std::vector<HeightColour>& ramp, const spline::Mesh& mesh);
 
 }  // namespace gllab

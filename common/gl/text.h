@@ -1,7 +1,7 @@
 // common/gl/text.h — text on screen, identical in a window and headless.
 //
 // GLUT's bitmap fonts live in libglut, which the headless programs must not
-// link (it pulls in libGL; see DESIGN.md). So text is drawn with glBitmap from
+// link (it pulls in libGL; see docs/platform.md). So text is drawn with glBitmap from
 // a Linux console font (PSF1, 8x16 Terminus, Debian package console-setup-linux),
 // which gives the same pixels under OSMesa and GLX.
 #pragma once

@@ -21,13 +21,14 @@ void draw_frame(const Lab& lab, const State& state) {
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
 
-  // The depths to return to, whatever display() left pushed.
+  // The depths to return to, whatever the view's draw left pushed.
   GLint modelview_depth = 0, projection_depth = 0, attrib_depth = 0;
   glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, &modelview_depth);
   glGetIntegerv(GL_PROJECTION_STACK_DEPTH, &projection_depth);
   glGetIntegerv(GL_ATTRIB_STACK_DEPTH, &attrib_depth);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   try {
-    lab.display(state);
+    state.current_view().draw(state);
   } catch (const std::exception& e) {
     // The spline core throws on bad input (two interpolation nodes dragged
     // onto one x): a frame error like a GL error, never a crash.
@@ -42,7 +43,7 @@ void draw_frame(const Lab& lab, const State& state) {
   glPopMatrix();
   glPopClientAttrib();
   glPopAttrib();
-  check_gl_errors("in display() of view '" + state.view() + "'");
+  check_gl_errors("in the draw function of view '" + state.view() + "'");
 
   if (state.help) {
     draw_text_panel(8, 8, help_lines(lab, state), Rgb{1.f, 1.f, 0.85f});
@@ -60,6 +61,7 @@ std::vector<std::string> help_lines(const Lab& lab, const State& state) {
   lines.push_back("");
   lines.push_back("[v]/[V] next/previous view  [h] help");
   lines.push_back("[p] print headless command  [Esc] quit");
+  if (v.orbit()) lines.push_back("[right-drag] turn  [wheel] zoom  [0] reset the camera");
   if (!lab.points.empty()) {
     std::string names;
     for (const PointList& l : lab.points) names += (names.empty() ? "" : ", ") + l.name;

@@ -8,9 +8,10 @@
 
 namespace gllab {
 
-/// Sets the viewport, calls lab.display(state) between a full push and pop of
-/// GL state (so no frame leaks state into the next), draws the help overlay
-/// when state.help is on, and checks glGetError(). Errors go to
+/// Sets the viewport, clears the colour, depth and stencil buffers, calls the
+/// current view's draw function between a full push and pop of GL state (so
+/// no frame leaks state into the next), draws the help overlay when
+/// state.help is on, and checks glGetError(). Errors go to
 /// report_frame_error().
 void draw_frame(const Lab& lab, const State& state);
 

@@ -183,8 +183,34 @@ void State::step(const std::string& name, double delta) {
   set(name, std::clamp(decimal(p.value + delta), p.lo, p.hi));
 }
 
+void State::set_camera_from_text(const std::string& text) {
+  std::vector<double> v;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double x = 0;
+    if (!parse_number(part, x))
+      throw std::invalid_argument("malformed --camera '" + text + "': '" + part +
+                                  "' is not a number (expected yaw,pitch,zoom, e.g. 30,-15,1.5)");
+    v.push_back(x);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (v.size() != 3)
+    throw std::invalid_argument("malformed --camera '" + text + "': " + std::to_string(v.size()) +
+                                " numbers (expected yaw,pitch,zoom, e.g. 30,-15,1.5)");
+  if (!(v[2] >= kMinZoom && v[2] <= kMaxZoom))
+    throw std::invalid_argument("--camera '" + text + "': zoom " + format_number(v[2]) + " is out of range [" +
+                                format_number(kMinZoom) + ", " + format_number(kMaxZoom) + "]");
+  camera = {v[0], v[1], v[2]};
+}
+
 std::string State::as_arguments() const {
   std::string args = "--view " + view();
+  if (camera != Camera{})
+    args += " --camera " + format_number(camera.yaw) + "," + format_number(camera.pitch) + "," +
+            format_number(camera.zoom);
   for (std::size_t i = 0; i < params_.size(); ++i)
     if (params_[i].value != defaults_[i])
       args += " --set " + params_[i].name + "=" + format_number(params_[i].value);
@@ -201,12 +227,22 @@ void validate_lab(const Lab& lab) {
     throw std::logic_error("lab " + lab.id + ": " + why);
   };
   if (lab.views.empty()) fail("has no views");
-  if (!lab.display) fail("has no display()");
-  if (lab.views.front().expect_error)
+  if (lab.views.front().expect_error())
     fail("first view '" + lab.views.front().name + "' is an error view (the window opens with the first view)");
-  for (std::size_t i = 0; i < lab.views.size(); ++i)
+  for (std::size_t i = 0; i < lab.views.size(); ++i) {
+    const View& v = lab.views[i];
+    if (v.name.empty() || v.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      fail("view name '" + v.name + "' (needs lower_snake_case: a-z, 0-9, _)");
+    if (!v.draw) fail("view '" + v.name + "' has no draw function");
+    if ((v.flags & ~(kOrbit | kErrorView)) != 0) fail("view '" + v.name + "' has unknown flags");
     for (std::size_t j = i + 1; j < lab.views.size(); ++j)
-      if (lab.views[i].name == lab.views[j].name) fail("view '" + lab.views[i].name + "' twice");
+      if (v.name == lab.views[j].name) fail("view '" + v.name + "' twice");
+    if (!v.same_as.empty()) {
+      const bool known = std::any_of(lab.views.begin(), lab.views.end(),
+                                     [&](const View& o) { return o.name == v.same_as && &o != &v; });
+      if (!known) fail("view '" + v.name + "' is the same as '" + v.same_as + "', which is not another view");
+    }
+  }
   for (const Param& p : lab.params)
     if (!(p.lo <= p.value && p.value <= p.hi))
       fail("parameter " + p.name + " default " + format_number(p.value) + " outside its range");

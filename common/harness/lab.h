@@ -1,9 +1,11 @@
 // common/harness/lab.h — what a lab is, as both runners see it.
 //
-// A lab is data plus four functions, like a Red Book program:
-//   init()      once, after a GL context exists (shutdown(), if set, undoes it)
-//   display(s)  draws the whole frame from the State s and nothing else
-//   keyboard()  changes the State (never GL state), display() applies it
+// A lab is data plus a few functions, like a Red Book program:
+//   init()       once, after a GL context exists (shutdown(), if set, undoes it)
+//   a view's draw(s)  the display() of that view: draws the whole frame from
+//                the State s and nothing else (the runner has cleared the
+//                colour, depth and stencil buffers with the lab's glClearColor)
+//   keyboard()   changes the State (never GL state); the view's draw applies it
 // Every knob a key turns is a named parameter in the State, so any picture a
 // student sees in the window can be rendered again headless with --set.
 #pragma once
@@ -20,18 +22,36 @@
 
 namespace gllab {
 
-/// One picture a lab can show; graders compare each against
-/// reference_images/<lab>__<view>.png.
+class State;
+
+/// View flags (View::flags), combined with |.
+/// kOrbit: a 3D view. In the window the right mouse button turns it, the wheel
+///   zooms and [0] resets (State::camera, applied by gllab::apply_orbit); `p`
+///   prints the camera as --camera, so the picture renders again headless.
+/// kErrorView: it exists to show an error (say GLU's NURBS error for a
+///   reversed trim loop). The window shows the error on screen; headless the
+///   run exits 1 with the error line, as for any frame error, so the view has
+///   no reference image. --list-views marks it ("name expect_error"); labrun
+///   passes it when the render exits 1 with an error line, and fails it when
+///   it renders. It cannot be a lab's first view (the window opens there).
+inline constexpr unsigned kOrbit = 1u << 0;
+inline constexpr unsigned kErrorView = 1u << 1;
+
+/// One picture a lab can show, declared with the function that draws it:
+///   {"slivers", "GLU's slivers along a coarse polyline", draw_slivers, gllab::kOrbit}
+/// Graders compare each against reference_images/<lab>__<view>.png.
 struct View {
   std::string name;  // lower_snake, used on the command line and in file names
   std::string what;  // one line for the help overlay and --list-views
-  /// An error view: it exists to show an error (say GLU's NURBS error for a
-  /// reversed trim loop). The window shows the error on screen; headless the
-  /// run exits 1 with the error line, as for any frame error, so the view has
-  /// no reference image. --list-views marks it ("name expect_error"); labrun
-  /// passes it when the render exits 1 with an error line, and fails it when
-  /// it renders. It cannot be a lab's first view (the window opens there).
-  bool expect_error = false;
+  std::function<void(const State&)> draw;  // this view's display()
+  unsigned flags = 0;                      // kOrbit, kErrorView
+  /// Another view of the lab whose picture this one equals on purpose (lab
+  /// 05's four submission paths). Every other pair of views must differ: a
+  /// test renders them all (--list-views prints "name same_as=other").
+  std::string same_as = {};
+
+  bool expect_error() const { return (flags & kErrorView) != 0; }
+  bool orbit() const { return (flags & kOrbit) != 0; }
 };
 
 /// A lab parameter: a number with a range. Toggles are 0/1.
@@ -44,7 +64,7 @@ struct Param {
 
 /// Points the mouse drags in the window: control points, data points, tangent
 /// handles, in the lab's coordinates. They live in the State like the
-/// parameters, so display() draws them from there, `p` prints a dragged point
+/// parameters, so a view draws them from there, `p` prints a dragged point
 /// as `--set P[3]=1.5,2`, and the same picture renders again headless.
 struct PointList {
   std::string name;                  // "P": --set P[3]=x,y[,z]
@@ -77,7 +97,21 @@ struct Key {
   double step = 0;
 };
 
-/// Everything display() may read. The runners own it; keyboard() changes it.
+/// The orbit camera of the kOrbit views: turns and a zoom on top of the
+/// lab's own camera. The default {0, 0, 1} is the lab's camera as the
+/// reference images show it. apply_orbit (gl/scene.h) turns the eye space
+/// about the centre of the view: pitch degrees about the screen's x axis
+/// (right-drag up and down), then yaw degrees about its y axis (left and
+/// right); zoom scales the projection in x and y.
+struct Camera {
+  double yaw = 0, pitch = 0, zoom = 1;
+  bool operator==(const Camera& o) const { return yaw == o.yaw && pitch == o.pitch && zoom == o.zoom; }
+  bool operator!=(const Camera& o) const { return !(*this == o); }
+};
+inline constexpr double kMinZoom = 0.1, kMaxZoom = 20;
+
+/// Everything a view's draw function may read. The runners own it;
+/// keyboard() and the mouse change it.
 class State {
  public:
   State(std::vector<View> views, std::vector<Param> params, std::vector<PointList> points = {});
@@ -89,10 +123,12 @@ class State {
   // times, throughput) when it is set; a headless render never contains them,
   // so reference images stay reproducible.
   bool interactive = false;
+  Camera camera;                  // kOrbit views: --camera yaw,pitch,zoom
 
   std::size_t view_index() const { return view_; }
   const std::string& view() const { return views_[view_].name; }
   const std::vector<View>& views() const { return views_; }
+  const View& current_view() const { return views_[view_]; }
   /// Throws std::invalid_argument naming the view and listing the valid ones.
   void select_view(const std::string& name);
   void next_view(int step);
@@ -120,8 +156,12 @@ class State {
   void toggle(const std::string& name);
   void step(const std::string& name, double delta);
 
-  /// The --set arguments that reproduce this state (non-default params and
-  /// moved points only).
+  /// "yaw,pitch,zoom" as --camera takes it; throws std::invalid_argument
+  /// naming the text for anything else (zoom within [kMinZoom, kMaxZoom]).
+  void set_camera_from_text(const std::string& text);
+
+  /// The arguments that reproduce this state: --view, then --camera when it
+  /// is not the default, --set for non-default params and moved points.
   std::string as_arguments() const;
 
  private:
@@ -141,21 +181,17 @@ struct Lab {
   std::vector<View> views;
   std::vector<Param> params;
   std::vector<Key> keys;
-  std::function<void()> init;
-  /// An exception out of display() (the spline core rejecting dragged data,
-  /// say) is a frame error like a GL error: shown in the window, exit 1
-  /// headless; the matrices and attributes it left pushed are popped.
-  std::function<void(const State&)> display;
+  std::function<void()> init = nullptr;
   /// Keys that do more than turn one parameter. Returns true when the key
   /// was the lab's. May be empty when every key names its parameter.
   std::function<bool(State&, unsigned char)> keyboard = nullptr;
-  /// True when display() reads State::time: the window runner then advances
+  /// True when a view's draw reads State::time: the window runner then advances
   /// time continuously; headless runs keep the fixed --time (default 0).
   bool animated = false;
   /// Optional: runs once, with the GL context still current, before the
   /// runner destroys it: release what init() made (buffers, lists, textures).
   std::function<void()> shutdown = nullptr;
-  /// Points the mouse can drag (display() draws them with
+  /// Points the mouse can drag (a view draws them with
   /// gllab::draw_control_points, which makes them pickable).
   std::vector<PointList> points = {};
   /// Optional, for labs that edit one curve or surface: that object, built
@@ -170,18 +206,22 @@ struct Lab {
 Lab define_lab();
 
 /// Keys the runners keep for themselves; a lab may not use them.
-/// \x13 is Ctrl+S (save the model as JSON).
-inline constexpr char kReservedKeys[] = "hvVp\x1b\x13";
+/// \x13 is Ctrl+S (save the model as JSON); 0 resets the orbit camera.
+inline constexpr char kReservedKeys[] = "hvVp0\x1b\x13";
 
-/// Checks a lab definition (views present and unique, defaults in range, no
-/// reserved or duplicate keys, every key's parameter exists). Throws
-/// std::logic_error naming the problem.
+/// Checks a lab definition (views present, unique and each with its draw
+/// function, same_as naming another view, defaults in range, no reserved or
+/// duplicate keys, every key's parameter exists). Throws std::logic_error
+/// naming the problem.
 void validate_lab(const Lab& lab);
 
 /// A key press in the window: a key that names a parameter steps or toggles
 /// it, any other goes to lab.keyboard. Returns true when the state changed.
 bool apply_key(const Lab& lab, State& state, unsigned char key);
 
+/// An exception out of a view's draw (the spline core rejecting dragged data,
+/// say) is a frame error like a GL error: shown in the window, exit 1
+/// headless; the matrices and attributes it left pushed are popped.
 /// Errors found while drawing (GL errors, GLU NURBS errors). The headless
 /// runner exits non-zero when any is pending after a frame; the window runner
 /// shows them on screen.

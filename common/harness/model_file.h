@@ -4,7 +4,7 @@
 // [Ctrl+S] writes that object as <lab>__<view>.json in the core's format
 // (common/io/README.md: splinetool and the tests read it too), and prints
 // the headless command that renders the same picture from it:
-//   ./lab render 13 --view knot_insertion --load 13_bspline_curves__knot_insertion.json --out x.png
+//   ./lab render 13 --view knot_insertion --load 15_bspline_curves__knot_insertion.json --out x.png
 // --load (both runners) puts the file's control points into the lab's first
 // point list and then checks that the lab, with the other --set values of
 // the command line, builds exactly the file's object: same type, degrees,

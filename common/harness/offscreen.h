@@ -2,7 +2,8 @@
 //
 // The one implementation today is OSMesa (offscreen_osmesa.cpp), the
 // reference renderer. OSMesa was removed from Mesa 25.1; its successor, EGL
-// surfaceless, fits behind this same interface (DESIGN.md).
+// surfaceless, fits behind this same interface (docs/platform.md,
+// "After OSMesa: EGL surfaceless", has what a port needs, measured).
 #pragma once
 
 #include <memory>

@@ -1,6 +1,6 @@
 // common/harness/offscreen_osmesa.cpp — OffscreenContext over OSMesa.
 //
-// Facts from DESIGN.md this file depends on:
+// Facts this file depends on (docs/platform.md):
 //  - libOSMesa exports every gl* symbol itself; it must come before libGLU on
 //    the link line and no program may also link libGL, or every GL call
 //    silently does nothing. A null GL_RENDERER is the symptom we check for.

@@ -55,6 +55,8 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == "--set") o.sets.push_back(value());
     else if (a == "--load") o.load = value();
     else if (a == "--capture-views" && runner == Runner::kWindow) o.capture_views = value();
+    else if (a == "--capture-at-exit" && runner == Runner::kWindow) o.capture_at_exit = value();
+    else if (a == "--camera") o.camera = value();
     else if (a == "--time") {
       const std::string& t = value();
       char* end = nullptr;
@@ -85,6 +87,7 @@ State make_state(const Lab& lab, const Options& options) {
   s.help = options.overlay;
   try {
     if (!options.view.empty()) s.select_view(options.view);
+    if (!options.camera.empty()) s.set_camera_from_text(options.camera);
     for (const std::string& v : options.views) s.select_view(v);  // each must exist; the first is drawn first
     if (!options.views.empty()) s.select_view(options.views.front());
     for (const std::string& set : options.sets) s.set_from_text(set);
@@ -113,13 +116,18 @@ std::string columns(const std::vector<std::pair<std::string, std::string>>& rows
 std::string views_text(const Lab& lab) {
   std::vector<std::pair<std::string, std::string>> rows;
   for (const View& v : lab.views)
-    rows.emplace_back(v.name, v.expect_error ? v.what + " (error view: headless exits 1)" : v.what);
+    rows.emplace_back(v.name, v.expect_error() ? v.what + " (error view: headless exits 1)" : v.what);
   return columns(rows, 20);
 }
 
 std::string list_views_text(const Lab& lab) {
   std::string text;
-  for (const View& v : lab.views) text += v.name + (v.expect_error ? " expect_error\n" : "\n");
+  for (const View& v : lab.views) {
+    text += v.name;
+    if (v.expect_error()) text += " expect_error";
+    if (!v.same_as.empty()) text += " same_as=" + v.same_as;
+    text += "\n";
+  }
   return text;
 }
 
@@ -142,12 +150,15 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
         << "  " << program << "_headless --view NAME --out FILE.png\n"
         << "--capture draws the first frame, writes it as PNG and exits (window smoke test);\n"
         << "--capture-views DIR does so for every view, as DIR/<lab>__<view>.png (graders\n"
-        << "compare window and headless renders).\n\n";
+        << "compare window and headless renders); --capture-at-exit FILE writes the last\n"
+        << "frame shown when the window closes (scripted tests).\n\n";
   }
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"
       << "  --size WxH        framebuffer size in pixels (default 512x512)\n"
       << "  --set key=value   lab parameter (repeatable; see below)\n";
+  if (std::any_of(lab.views.begin(), lab.views.end(), [](const View& v) { return v.orbit(); }))
+    out << "  --camera Y,P,Z    3D views: yaw and pitch in degrees, zoom (default 0,0,1; `p` prints it)\n";
   if (!lab.points.empty())
     out << "  --set P[i]=x,y    move point i of a point list (x,y,z for 3D lists)\n";
   if (lab.model)
@@ -179,7 +190,11 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
                        << " as <lab>__<view>.json and print the command that renders it\n";
     out << "  Esc     quit\n";
     for (const Key& k : lab.keys) out << "  " << k.key << "       " << k.what << '\n';
-    if (!lab.points.empty()) out << "\nmouse:\n  drag a point with the left button (its coordinates show while it moves)\n";
+    const bool orbit = std::any_of(lab.views.begin(), lab.views.end(), [](const View& v) { return v.orbit(); });
+    if (orbit) out << "  0       reset the camera of a 3D view\n";
+    if (!lab.points.empty() || orbit) out << "\nmouse:\n";
+    if (!lab.points.empty()) out << "  drag a point with the left button (its coordinates show while it moves)\n";
+    if (orbit) out << "  3D views: drag with the right button to turn, the wheel zooms\n";
   }
   return out.str();
 }

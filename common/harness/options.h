@@ -22,6 +22,8 @@ struct Options {
   int width = 512, height = 512;    // --size WxH
   std::string out;                  // --out FILE (headless), --capture FILE (window)
   std::string capture_views;        // --capture-views DIR (window): every view to DIR/<lab>__<view>.png
+  std::string capture_at_exit;      // --capture-at-exit FILE (window): the last frame shown, when it closes
+  std::string camera;               // --camera yaw,pitch,zoom (State::camera)
   std::vector<std::string> sets;    // --set key=value, in order
   std::string load;                 // --load FILE: the lab's curve or surface (model_file.h)
   double time = 0;                  // --time SECONDS
@@ -46,7 +48,8 @@ State make_state(const Lab& lab, const Options& options);
 std::string usage_text(const Lab& lab, const std::string& program, Runner runner);
 std::string views_text(const Lab& lab);
 /// What --list-views prints: one view name per line, an error view's name
-/// followed by " expect_error" (View::expect_error; labrun reads it).
+/// followed by " expect_error" (kErrorView; labrun reads it), a view that
+/// equals another on purpose by " same_as=OTHER" (View::same_as).
 std::string list_views_text(const Lab& lab);
 
 /// "01_immediate_mode" from a path like "build/bin/01_immediate_mode_headless".

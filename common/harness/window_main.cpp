@@ -2,17 +2,21 @@
 //
 // Keys of the runner: [v]/[V] view, [h] help overlay, [p] print the headless
 // command for what is on screen, [Ctrl+S] save the lab's curve or surface
-// (model_file.h), [Esc] quit. Everything else goes to the lab. The left
-// mouse button drags the points of the lab's point lists (gl/pick.h).
+// (model_file.h), [0] reset the camera of a 3D view, [Esc] quit. Everything
+// else goes to the lab. The left mouse button drags the points of the lab's
+// point lists (gl/pick.h); in a 3D view (kOrbit) the right button turns the
+// camera and the wheel zooms (State::camera).
 #include <X11/Xlib.h>
 #include <GL/freeglut.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,10 +45,25 @@ struct WindowState {
   bool shut_down = false;               // lab.shutdown() has run
   std::optional<gllab::Pickable> drag;  // the point the left button holds
   std::string notice;                   // one line for the user (a file saved), until the next key
+  std::string capture_at_exit;          // --capture-at-exit FILE: the last frame, written at the end
+  std::vector<std::uint8_t> last_frame; // its pixels, bottom-up RGBA (only with --capture-at-exit)
+  // A right-button drag of the camera: where it started, in GLUT pixels.
+  struct Turn {
+    int x = 0, y = 0;
+    gllab::Camera from;
+  };
+  std::optional<Turn> turn;
 };
 
 // How near (pixels) the mouse must be to a point to grab it.
 constexpr double kPickPixels = 12;
+// The orbit camera: degrees per pixel of a right-button drag, and the zoom
+// factor of one wheel step. Angles snap to 1/2 degree and the zoom to 1/100,
+// decimals that the printed --camera reads back exactly (like snap_to_grid).
+constexpr double kDegreesPerPixel = 0.5;
+constexpr double kZoomPerStep = 1.25;
+double snap_angle(double degrees) { return std::round(degrees * 2) / 2; }
+double snap_zoom(double zoom) { return std::clamp(std::round(zoom * 100) / 100, gllab::kMinZoom, gllab::kMaxZoom); }
 WindowState* g_window = nullptr;
 
 void update_title() {
@@ -70,6 +89,13 @@ std::string drag_text(const WindowState& w) {
   return text;
 }
 
+// "camera yaw=30 pitch=-15 zoom=1.25" while the right button turns it.
+std::string camera_text(const gllab::State& s) {
+  char text[128];
+  std::snprintf(text, sizeof text, "camera yaw=%g pitch=%g zoom=%g", s.camera.yaw, s.camera.pitch, s.camera.zoom);
+  return text;
+}
+
 void display() {
   WindowState& w = *g_window;
   gllab::clear_pickables();
@@ -81,7 +107,15 @@ void display() {
   }
   if (!w.errors.empty()) gllab::draw_error_lines(w.errors);
   if (w.drag) gllab::draw_text_panel(8, w.state->height - 32, {drag_text(w)}, {1.f, 1.f, 0.6f});
+  else if (w.turn) gllab::draw_text_panel(8, w.state->height - 32, {camera_text(*w.state)}, {1.f, 1.f, 0.6f});
   else if (!w.notice.empty()) gllab::draw_text_panel(8, w.state->height - 32, {w.notice}, {0.7f, 1.f, 0.7f});
+  if (!w.capture_at_exit.empty()) {
+    glFinish();
+    w.last_frame.resize(static_cast<std::size_t>(w.state->width) * w.state->height * 4);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w.state->width, w.state->height, GL_RGBA, GL_UNSIGNED_BYTE, w.last_frame.data());
+  }
   if (!w.capture.empty() || !w.capture_views.empty()) {
     // Read the back buffer: exactly what the lab drew, before the swap.
     glFinish();
@@ -102,7 +136,8 @@ void display() {
     // --capture-views: the next view, until every one is written (error
     // views exist to fail, headless too: they have no picture to compare).
     std::size_t next = w.state->view_index() + 1;
-    while (!w.capture_views.empty() && next < w.state->views().size() && w.state->views()[next].expect_error) ++next;
+    while (!w.capture_views.empty() && next < w.state->views().size() && w.state->views()[next].expect_error())
+      ++next;
     if (!w.capture_views.empty() && next < w.state->views().size()) {
       w.errors.clear();
       w.state->select_view(w.state->views()[next].name);
@@ -146,6 +181,10 @@ void keyboard(unsigned char key, int, int) {
       break;
     }
     case 'h': s.help = !s.help; break;
+    case '0':
+      if (!s.current_view().orbit()) return;
+      s.camera = gllab::Camera{};
+      break;
     case 'v': s.next_view(+1); break;
     case 'V': s.next_view(-1); break;
     case 'p': {
@@ -167,9 +206,30 @@ void keyboard(unsigned char key, int, int) {
 // GLUT gives window pixels with y down; GL's window coordinates have y up.
 double gl_y(int y) { return g_window->state->height - 1 - y; }
 
+// The wheel arrives as buttons 3 (up: closer) and 4 (down) when no wheel
+// callback is set (freeglut); the right button turns the camera.
+void orbit_mouse(int button, int button_state, int x, int y) {
+  WindowState& w = *g_window;
+  gllab::State& s = *w.state;
+  if (!s.current_view().orbit()) return;
+  if ((button == 3 || button == 4) && button_state == GLUT_DOWN) {
+    s.camera.zoom = snap_zoom(button == 3 ? s.camera.zoom * kZoomPerStep : s.camera.zoom / kZoomPerStep);
+  } else if (button == GLUT_RIGHT_BUTTON && button_state == GLUT_DOWN) {
+    w.turn = WindowState::Turn{x, y, s.camera};
+  } else if (button == GLUT_RIGHT_BUTTON && w.turn) {
+    std::printf("%s\n", camera_text(s).c_str());  // where it was let go
+    std::fflush(stdout);
+    w.turn.reset();
+  } else {
+    return;
+  }
+  w.errors.clear();
+  glutPostRedisplay();
+}
+
 void mouse(int button, int button_state, int x, int y) {
   WindowState& w = *g_window;
-  if (button != GLUT_LEFT_BUTTON) return;
+  if (button != GLUT_LEFT_BUTTON) return orbit_mouse(button, button_state, x, y);
   if (button_state == GLUT_DOWN) {
     w.drag = gllab::nearest_pickable(x, gl_y(y), kPickPixels);
   } else if (w.drag) {
@@ -184,6 +244,13 @@ void mouse(int button, int button_state, int x, int y) {
 // the printed --set line reproduces it exactly.
 void motion(int x, int y) {
   WindowState& w = *g_window;
+  if (w.turn) {
+    gllab::Camera& c = w.state->camera;
+    c.yaw = snap_angle(w.turn->from.yaw + kDegreesPerPixel * (x - w.turn->x));
+    c.pitch = snap_angle(w.turn->from.pitch + kDegreesPerPixel * (y - w.turn->y));
+    glutPostRedisplay();
+    return;
+  }
   if (!w.drag) return;
   const std::optional<gllab::spline::Vec3> to = gllab::drag_to(*w.drag, x, gl_y(y));
   if (!to) return;
@@ -250,6 +317,7 @@ int main(int argc, char** argv) {
     window.start_time = options.time;
     window.capture = options.out;
     window.capture_views = options.capture_views;
+    window.capture_at_exit = options.capture_at_exit;
     if (!window.capture_views.empty()) window.state->select_view(window.lab.views.front().name);
   } catch (const gllab::UsageError& e) {
     return fail(2, e.what());
@@ -291,5 +359,14 @@ int main(int argc, char** argv) {
   if (window.lab.animated && window.capture.empty() && window.capture_views.empty()) glutTimerFunc(16, tick, 0);
   glutMainLoop();
   if (glutGetWindow() != 0) shut_down_lab();
+  if (!window.capture_at_exit.empty()) {
+    try {
+      if (window.last_frame.empty()) throw std::runtime_error("no frame was shown");
+      gllab::write_png(window.capture_at_exit, gllab::image_from_bottom_up(window.last_frame.data(),
+                                                                           window.state->width, window.state->height));
+    } catch (const std::exception& e) {
+      return fail(1, "--capture-at-exit " + window.capture_at_exit + ": " + e.what());
+    }
+  }
   return window.exit_status;
 }

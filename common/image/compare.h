@@ -6,7 +6,7 @@
 // and a small share of different pixels is allowed. heat_map shows where they are.
 //
 // Lines are where renderers disagree most: softpipe and llvmpipe put a
-// one-pixel line on neighbouring pixels (DESIGN.md). A shift_radius of 1
+// one-pixel line on neighbouring pixels (docs/platform.md). A shift_radius of 1
 // excuses a differing pixel when each image has, within one pixel of it, a
 // pixel matching the other image's colour there: a line drawn one pixel over
 // is excused, a missing line, a moved vertex or a wrong colour is not.

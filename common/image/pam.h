@@ -1,6 +1,6 @@
 // common/image · raw frames between programs (netpbm PAM, "P7")
 // A grader compares many renders in memory: PNG's deflate costs a headless
-// run more time than its drawing (DESIGN.md: ~13 ms per 512x512 frame at zlib
+// run more time than its drawing (docs/platform.md: ~13 ms per 512x512 frame at zlib
 // level 6). So a headless program asked for `--out -` writes its frame to
 // stdout as PAM, the simplest standard container for RGBA8 pixels (netpbm's
 // P7: a text header, then the rows top-down), and the grader decodes it here.

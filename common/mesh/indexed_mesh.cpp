@@ -76,4 +76,39 @@ std::vector<float> interleaved(const IndexedMesh& mesh) {
   return out;
 }
 
+std::vector<float> rippled_torus(int rings, int sides, double R, double r, int waves,
+                                 double amplitude, double phase) {
+  std::vector<float> out;
+  out.reserve(6 * std::size_t(rings) * std::size_t(sides));
+  for (int i = 0; i < rings; ++i) {
+    const double u = 2 * M_PI * i / rings, cu = std::cos(u), su = std::sin(u);
+    const double rho = r + amplitude * std::sin(waves * u - phase);
+    const double drho = amplitude * waves * std::cos(waves * u - phase);
+    for (int j = 0; j < sides; ++j) {
+      const double v = 2 * M_PI * j / sides, cv = std::cos(v), sv = std::sin(v);
+      const double n[3] = {cv * cu, cv * su, sv}, w = R + rho * cv;
+      const double m[3] = {w * n[0] + drho * su, w * n[1] - drho * cu, w * n[2]};
+      const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+      out.insert(out.end(), {float(R * cu + rho * n[0]), float(R * su + rho * n[1]),
+                             float(rho * n[2]), float(m[0] / len), float(m[1] / len),
+                             float(m[2] / len)});
+    }
+  }
+  return out;
+}
+
+ColouredQuads checker_floor(int cells, float half, float z) {
+  ColouredQuads f;
+  const float step = 2 * half / cells;
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j) {
+      const float x = -half + i * step, y = -half + j * step, c = (i + j) % 2 ? 0.75f : 0.35f;
+      for (const auto& corner : {0, 1, 3, 2}) {  // (0,0) (1,0) (1,1) (0,1): counter-clockwise
+        f.positions.insert(f.positions.end(), {x + (corner & 1) * step, y + (corner >> 1) * step, z});
+        f.colours.insert(f.colours.end(), {c, c, c});
+      }
+    }
+  return f;
+}
+
 }  // namespace gllab

@@ -1,10 +1,11 @@
 // common/mesh/indexed_mesh.h — the triangle mesh the submission labs send to
-// OpenGL (02 display lists, 03 vertex arrays, 04 VBOs, 05 the four paths).
+// OpenGL (03 vertex arrays, 04 VBOs, 05 the four paths).
 //
 // Plain arrays in the layout glVertexPointer/glNormalPointer/glColorPointer
 // expect: 3 floats per position, normal and colour, each vertex stored once,
-// triangles as index triples (seed §1.2: a vertex shared by several polygons
-// is stored once and referenced). No GL here; the labs draw it.
+// triangles as index triples (lecture notes ch. 1, §1.2 Polygonal
+// representation, "Hierarchy of the representation": a vertex shared by several
+// polygons is stored once and referenced). No GL here; the labs draw it.
 #pragma once
 
 #include <cstddef>
@@ -43,5 +44,24 @@ IndexedMesh unshared(const IndexedMesh& mesh);
 /// One interleaved array of (x y z, nx ny nz, r g b) per vertex: 9 floats, a
 /// stride of 36 bytes.
 std::vector<float> interleaved(const IndexedMesh& mesh);
+
+/// The torus of make_torus(rings, sides, R, r) with a ripple running round the
+/// ring (lab 04): the tube radius is rho(u) = r + amplitude sin(waves u - phase).
+/// The surface is P(u, v) = c(u) + rho(u) n(u, v), c the ring and n the plain
+/// torus normal; its unit normal is along P_u x P_v = rho [(R + rho cos v) n -
+/// rho'(u) e_u], e_u = (-sin u, cos u, 0). Per vertex, in make_torus's order
+/// (so its colours and indices fit): x y z nx ny nz, 6 floats, 24 bytes.
+std::vector<float> rippled_torus(int rings, int sides, double R, double r, int waves,
+                                 double amplitude, double phase);
+
+/// Quads with a colour per corner, as glVertexPointer/glColorPointer take them.
+struct ColouredQuads {
+  std::vector<float> positions, colours;  // 3 floats per corner, 4 corners per quad
+};
+
+/// A checkerboard of cells x cells squares covering [-half, half]^2 in the plane
+/// z, two greys alternating (0.35, 0.75), each square's corners counter-
+/// clockwise seen from +z: what glDrawArrays(GL_QUADS) takes (lab 04's floor).
+ColouredQuads checker_floor(int cells, float half, float z);
 
 }  // namespace gllab

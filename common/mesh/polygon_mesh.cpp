@@ -282,6 +282,15 @@ PolygonMesh make_surface_of_revolution(const std::vector<ProfilePoint>& profile,
   return build_polygon_mesh(positions, polygons, std::move(surfaces));
 }
 
+std::vector<ProfilePoint> half_ellipse_profile(double a, double b, int n) {
+  std::vector<ProfilePoint> profile;
+  for (int i = 0; i <= n; ++i) {
+    const double t = M_PI * i / n - M_PI / 2;
+    profile.push_back({i == 0 || i == n ? 0 : a * std::cos(t), b * std::sin(t)});
+  }
+  return profile;
+}
+
 std::vector<ProfilePoint> resample_profile(const std::vector<ProfilePoint>& dense, int segments,
                                            double curvature_share) {
   const std::size_t n = dense.size();

@@ -1,19 +1,21 @@
-// common/mesh/polygon_mesh.h — the polygon mesh data structure of seed §1.2
-// (lab 06), and the arrays OpenGL draws from it.
+// common/mesh/polygon_mesh.h — the polygon mesh data structure of the lecture
+// notes, ch. 1, §1.2 Polygonal representation (lab 06), and the arrays OpenGL
+// draws from it.
 //
-// Hierarchy (seed §1.2, "Topology"): object → surfaces → polygons → edges →
-// vertices. The object is a PolygonMesh; each Surface is a list of polygons;
-// each Polygon lists its vertices (counter-clockwise seen from outside) and
-// its edges; each Edge joins two vertices and knows the polygons that use it;
-// each Vertex is stored once and referenced by index everywhere else
-// ("Vertices are stored only once"). The attributes are the seed's:
+// Hierarchy (§1.2, "Hierarchy of the representation", Topology): object →
+// surfaces → polygons → edges → vertices. The object is a PolygonMesh; each
+// Surface is a list of polygons; each Polygon lists its vertices
+// (counter-clockwise seen from outside) and its edges; each Edge joins two
+// vertices and knows the polygons that use it; each Vertex is stored once and
+// referenced by index everywhere else ("Vertices are stored only once"). The
+// attributes are those of §1.2, "Comment on data structures":
 //   surface: colour, shading, its polygons
 //   polygon: normal (Newell's method), area, flatness (non-planarity)
 //   edge:    length, type (feature line, virtual edge, boundary), its polygons
 //   vertex:  position, normal, optional colour, its polygons
 //
-// Sharp edges: the seed says a feature line is kept sharp "by storing edges
-// multiple times". render_arrays() does exactly that when it builds what
+// Sharp edges: §1.2, "Comment on edges", keeps a feature line sharp "by storing
+// edges multiple times". render_arrays() does exactly that when it builds what
 // glDrawElements needs: a vertex on a feature edge is written once per
 // smoothing group, each copy with its own normal.
 //
@@ -42,9 +44,9 @@ struct Colour {
 /// interpolated across its virtual edges.
 enum class Shading { kFlat, kSmooth };
 
-/// Seed §1.2, "Comment on edges": feature lines should stay visible, virtual
-/// edges (inside a smooth surface) should disappear after shading. A boundary
-/// edge belongs to one polygon only (an open surface).
+/// Lecture notes ch. 1, §1.2, "Comment on edges": feature lines should stay
+/// visible, virtual edges (inside a smooth surface) should disappear after
+/// shading. A boundary edge belongs to one polygon only (an open surface).
 enum class EdgeType { kVirtual, kFeature, kBoundary };
 
 struct Surface {
@@ -159,11 +161,17 @@ PolygonMesh make_surface_of_revolution(const std::vector<ProfilePoint>& profile,
                                        std::vector<Surface> surfaces = {Surface{}},
                                        const std::vector<std::size_t>& segment_surface = {});
 
+/// Half an ellipse from the south pole to the north pole, (a cos t, b sin t)
+/// for t from -90 to 90 degrees in n equal steps: n + 1 points, the poles with
+/// r = 0 exactly. Revolved, a = b gives a sphere, b < a a lentil.
+std::vector<ProfilePoint> half_ellipse_profile(double a, double b, int n);
+
 /// Picks segments + 1 points of a densely sampled profile, first and last
 /// included. Each dense segment weighs (1 − c)·length/total length +
 /// c·turning/total turning, and the picks split the total weight evenly:
 /// c = 0 spaces them uniformly along the curve, c = 1 by curvature only
-/// (seed §1.2: "choose the polygonal resolution based on the curvature").
+/// (lecture notes ch. 1, §1.2, "Properties/Characteristics": "choose the
+/// polygonal resolution based on the curvature").
 /// Throws when segments < 1 or > dense.size() − 1, or c is outside [0, 1].
 std::vector<ProfilePoint> resample_profile(const std::vector<ProfilePoint>& dense, int segments,
                                            double curvature_share);

@@ -18,6 +18,13 @@ namespace {
 
 std::string loop_name(std::size_t loop) { return "trim loop " + std::to_string(loop); }
 
+using Kind = TrimLoopError::Kind;
+
+[[noreturn]] void fail_loop(Kind kind, std::size_t loop, const std::string& message, std::string summary,
+                            std::string rule = "") {
+  throw TrimLoopError(kind, loop, message, std::move(summary), std::move(rule));
+}
+
 /// One point of a flattened loop, with where it came from (for messages).
 struct TaggedPoint {
   Vec2 p;
@@ -38,12 +45,14 @@ std::vector<TaggedPoint> piece_points(const TrimPiece& piece, std::size_t loop, 
   if (!piece.curve) {
     const std::size_t n = piece.polyline.size();
     if (n < 2)
-      fail(where + " has " + std::to_string(n) + (n == 1 ? " point" : " points") +
-           " (a polyline piece needs at least 2)");
+      fail_loop(Kind::kBadPiece, loop, where + " has " + std::to_string(n) + (n == 1 ? " point" : " points") +
+                " (a polyline piece needs at least 2)", "has a polyline piece with too few points",
+                "a polyline piece needs at least 2 points");
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 p = piece.polyline[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        fail(where + " point " + std::to_string(i) + " " + num(p) + " is not finite");
+        fail_loop(Kind::kBadPiece, loop, where + " point " + std::to_string(i) + " " + num(p) + " is not finite",
+                  "has a point that is not finite");
       out.push_back({p, k, i, 0, false});
     }
     return out;
@@ -52,14 +61,19 @@ std::vector<TaggedPoint> piece_points(const TrimPiece& piece, std::size_t loop, 
   try {
     validate(curve);
   } catch (const std::invalid_argument& e) {
-    fail(where + " (curve): " + e.what());
+    fail_loop(Kind::kBadPiece, loop, where + " (curve): " + e.what(), "has a broken trim curve");
   }
   for (std::size_t i = 0; i < curve.P.size(); ++i)
     if (curve.P[i].z != 0)
-      fail(where + " (curve): " + at("P", i) + "=" + num(curve.P[i]) + " has z != 0 (trim curves lie in the (u, v) plane)");
+      fail_loop(Kind::kBadPiece, loop,
+                where + " (curve): " + at("P", i) + "=" + num(curve.P[i]) +
+                    " has z != 0 (trim curves lie in the (u, v) plane)",
+                "has a trim curve off the (u, v) plane", "trim curves lie in the (u, v) plane");
   if (custom) {
     const std::vector<Vec2> points = (*custom)(curve);
-    if (points.size() < 2) fail(where + " (curve): the flattener returned fewer than 2 points");
+    if (points.size() < 2)
+      fail_loop(Kind::kBadPiece, loop, where + " (curve): the flattener returned fewer than 2 points",
+                "has a curve piece that flattens to fewer than 2 points");
     for (std::size_t i = 0; i < points.size(); ++i) out.push_back({points[i], k, i, 0, false});
     return out;
   }
@@ -83,7 +97,7 @@ std::vector<TaggedPoint> flatten_tagged(const TrimLoop& loop, double tolerance, 
                                         const TrimCurveFlattener* custom) {
   if (!custom && (!(tolerance > 0) || !std::isfinite(tolerance)))
     fail(loop_name(index) + ": flattening tolerance=" + num(tolerance) + " must be > 0");
-  if (loop.pieces.empty()) fail(loop_name(index) + ": has no pieces");
+  if (loop.pieces.empty()) fail_loop(Kind::kBadPiece, index, loop_name(index) + ": has no pieces", "has no pieces");
   std::vector<std::vector<TaggedPoint>> pieces;
   for (std::size_t k = 0; k < loop.pieces.size(); ++k)
     pieces.push_back(piece_points(loop.pieces[k], index, k, tolerance, custom));
@@ -94,8 +108,10 @@ std::vector<TaggedPoint> flatten_tagged(const TrimLoop& loop, double tolerance, 
     const std::size_t next = (k + 1) % n;
     const Vec2 end = pieces[k].back().p, start = pieces[next].front().p;
     if (norm(end - start) > kTrimClosureTolerance)
-      fail(loop_name(index) + ": not closed: piece " + std::to_string(k) + " ends at " + num(end) + ", piece " +
-           std::to_string(next) + " starts at " + num(start));
+      fail_loop(Kind::kNotClosed, index,
+                loop_name(index) + ": not closed: piece " + std::to_string(k) + " ends at " + num(end) +
+                    ", piece " + std::to_string(next) + " starts at " + num(start),
+                "is not closed", "every loop is closed: each piece starts where the one before ends");
   }
 
   // Concatenate: each piece's first point is the previous piece's last one.
@@ -214,19 +230,28 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const Vec2 p = poly[i];
       const std::string where = loop_name(l) + ": point " + std::to_string(i) + " " + num(p);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(where + " is not finite");
-      if (outside(p, domain)) fail(where + " lies outside the domain " + to_string(domain));
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        fail_loop(Kind::kBadPiece, l, where + " is not finite", "has a point that is not finite");
+      if (outside(p, domain))
+        fail_loop(Kind::kOutsideDomain, l, where + " lies outside the domain " + to_string(domain),
+                  "leaves the domain", "trim loops lie in the surface's (u, v) domain");
     }
     for (std::size_t i = 1; i < poly.size(); ++i)
       if (poly[i] == poly[i - 1])
-        fail(loop_name(l) + ": point " + std::to_string(i) + " " + num(poly[i]) + " repeats point " +
-             std::to_string(i - 1));
+        fail_loop(Kind::kRepeatedPoint, l,
+                  loop_name(l) + ": point " + std::to_string(i) + " " + num(poly[i]) + " repeats point " +
+                      std::to_string(i - 1),
+                  "repeats a point");
     if (poly.size() > 1 && poly.back() == poly.front())
-      fail(loop_name(l) + ": point " + std::to_string(poly.size() - 1) + " " + num(poly.back()) +
-           " repeats point 0 (a TrimPolygon does not repeat its first point)");
+      fail_loop(Kind::kRepeatedPoint, l,
+                loop_name(l) + ": point " + std::to_string(poly.size() - 1) + " " + num(poly.back()) +
+                    " repeats point 0 (a TrimPolygon does not repeat its first point)",
+                "repeats its first point");
     if (poly.size() < 3)
-      fail(loop_name(l) + ": has " + std::to_string(poly.size()) + (poly.size() == 1 ? " point" : " points") +
-           " (a loop needs at least 3)");
+      fail_loop(Kind::kTooFewPoints, l,
+                loop_name(l) + ": has " + std::to_string(poly.size()) + (poly.size() == 1 ? " point" : " points") +
+                    " (a loop needs at least 3)",
+                "has too few points", "a loop needs at least 3 points");
   }
 
   // 2. No two edges meet, except neighbours in one loop at their shared point.
@@ -279,15 +304,19 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
   if (best_later < edges.size()) {
     const Edge& E = edges[best_later];
     const Edge& F = edges[best_earlier];
-    fail(loop_name(E.loop) + ": edge " + std::to_string(E.index) + " " + num(E.a) + "-" + num(E.b) + " crosses edge " +
-         std::to_string(F.index) + " of loop " + std::to_string(F.loop) + " at " + num(best_at));
+    fail_loop(Kind::kCrossing, E.loop,
+              loop_name(E.loop) + ": edge " + std::to_string(E.index) + " " + num(E.a) + "-" + num(E.b) +
+                  " crosses edge " + std::to_string(F.index) + " of loop " + std::to_string(F.loop) + " at " +
+                  num(best_at),
+              "crosses loop " + std::to_string(F.loop), "no two trim curves cross");
   }
 
   // 3. Area, nesting depth and orientation.
   std::vector<TrimLoopInfo> info(polygons.size());
   for (std::size_t l = 0; l < polygons.size(); ++l) {
     info[l].area = signed_area(polygons[l]);
-    if (info[l].area == 0) fail(loop_name(l) + ": has zero area (signed area 0)");
+    if (info[l].area == 0)
+      fail_loop(Kind::kZeroArea, l, loop_name(l) + ": has zero area (signed area 0)", "has zero area");
   }
   for (std::size_t l = 0; l < polygons.size(); ++l) {
     // Loops do not meet, so any point of loop l is strictly inside or outside another loop.
@@ -302,10 +331,14 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
     const bool outer = info[l].depth % 2 == 0;
     const std::string area = "(signed area " + num(info[l].area) + ")";
     if (outer && info[l].area < 0)
-      fail(loop_name(l) + " (outer) runs clockwise " + area + "; outer loops must run counter-clockwise");
+      fail_loop(Kind::kOuterClockwise, l,
+                loop_name(l) + " (outer) runs clockwise " + area + "; outer loops must run counter-clockwise",
+                "(outer) runs clockwise", "outer loops must run counter-clockwise");
     if (!outer && info[l].area > 0)
-      fail(loop_name(l) + " (hole in loop " + std::to_string(info[l].parent) + ") runs counter-clockwise " + area +
-           "; holes must run clockwise");
+      fail_loop(Kind::kHoleCounterClockwise, l,
+                loop_name(l) + " (hole in loop " + std::to_string(info[l].parent) + ") runs counter-clockwise " +
+                    area + "; holes must run clockwise",
+                "(a hole) runs counter-clockwise", "holes must run clockwise");
   }
   return info;
 }
@@ -319,7 +352,9 @@ std::vector<TrimPolygon> validate_trim_loops(const std::vector<TrimLoop>& loops,
     // Pieces and closure (flatten_tagged), then the domain: the message can name the piece.
     TrimPolygon polygon;
     for (const TaggedPoint& q : flatten_tagged(loops[l], tolerance, l, nullptr)) {
-      if (outside(q.p, domain)) fail(describe(q, l) + " lies outside the domain " + to_string(domain));
+      if (outside(q.p, domain))
+        fail_loop(Kind::kOutsideDomain, l, describe(q, l) + " lies outside the domain " + to_string(domain),
+                  "leaves the domain", "trim loops lie in the surface's (u, v) domain");
       polygon.push_back(q.p);
     }
     polygons.push_back(std::move(polygon));

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,30 @@ inline constexpr double kTrimDomainSlack = 1e-12;
 /// Default chordal tolerance (u, v units) for flattening curve pieces when no
 /// surface is involved (validation, the inside test, drawing in the domain).
 inline constexpr double kTrimFlattenTolerance = 1e-4;
+
+/// What the flattening and validation below throw for a bad loop: the
+/// message documented at each function (what()), and the same as data, so a
+/// program shows the loop and the rule without parsing the text.
+struct TrimLoopError : std::invalid_argument {
+  enum class Kind {
+    kBadPiece,              // a piece without points, not finite, or a broken curve
+    kNotClosed,             // a piece ends where the next does not start
+    kOutsideDomain,         // a point beyond the surface's (u, v) domain
+    kRepeatedPoint,         // a TrimPolygon lists a point twice in a row
+    kTooFewPoints,          // fewer than 3 distinct points
+    kCrossing,              // two edges cross or touch
+    kZeroArea,
+    kOuterClockwise,        // an outer loop (even depth) runs clockwise
+    kHoleCounterClockwise,  // a hole (odd depth) runs counter-clockwise
+  };
+  TrimLoopError(Kind kind, std::size_t loop, const std::string& message, std::string summary,
+                std::string rule = "")
+      : std::invalid_argument(message), kind(kind), loop(loop), summary(std::move(summary)), rule(std::move(rule)) {}
+  Kind kind;
+  std::size_t loop;     // the loop at fault (for a crossing, the later of the two)
+  std::string summary;  // a few words without numbers: "runs clockwise", "is not closed"
+  std::string rule;     // the rule it breaks, or empty: "outer loops must run counter-clockwise"
+};
 
 // ---- flattening ------------------------------------------------------------
 
@@ -95,7 +120,7 @@ struct TrimLoopInfo {
 };
 
 /// Checks polygons as GLU would have them, in this order, and throws
-/// std::invalid_argument on the first failure:
+/// TrimLoopError (a std::invalid_argument) on the first failure:
 ///   - a point not finite or outside `domain` (beyond kTrimDomainSlack):
 ///       "trim loop 0: point 3 (1.5, 0.5) lies outside the domain [0, 1] x [0, 1]"
 ///   - fewer than 3 distinct points: "trim loop 0: has 2 points (a loop needs at least 3)"

@@ -1,10 +1,12 @@
 // lab 01 · immediate mode                                   difficulty: ★☆☆☆
-// The six polygon primitives of glBegin/glEnd, lit with glNormal3f (seed §1.3).
+// The six polygon primitives of glBegin/glEnd, lit with glNormal3f (lecture
+// notes ch. 1, §1.3 Polygon rendering with OpenGL).
 // Notice: a strip or fan reuses vertices; GL_POLYGON is only defined for
 //   convex, planar outlines.
 // Try: press [f] to mirror the scene. Why do the filled faces turn into
 //   outlines in vertex_order? Then move a vertex of the U so it is convex.
 // Keys: [l] lighting  [r]/[R] spin  [f] flip winding  [n] labels  [h] help  [Esc] quit
+//   right-drag turn  wheel zoom  [0] reset the camera
 // Views: default, wireframe, vertex_order, invalid_polygons
 // Reference: reference_images/01_immediate_mode__*.png
 
@@ -46,15 +48,18 @@ const Primitive kPrimitives[] = {
      {{-.85f, -.2f}, {-.75f, -.75f}, {-.25f, .15f}, {-.05f, -.45f}, {.45f, .55f}, {.8f, .05f}}},
     // Every vertex after the 2nd makes a triangle with the first and the one before.
     {GL_TRIANGLE_FAN, "GL_TRIANGLE_FAN", {0.85f, 0.35f, 0.65f},
-     {{0.f, -.6f}, {.85f, -.3f}, {.7f, .35f}, {.2f, .8f}, {-.35f, .75f}, {-.75f, .35f}, {-.85f, -.3f}}},
+     {{0.f, -.6f}, {.85f, -.3f}, {.7f, .35f}, {.2f, .8f}, {-.35f, .75f}, {-.75f, .35f},
+      {-.85f, -.3f}}},
     // Every 4 vertices make one quad: 8 vertices, 2 quads.
     {GL_QUADS, "GL_QUADS", {0.9f, 0.8f, 0.25f},
-     {{-.85f, -.75f}, {-.1f, -.75f}, {-.1f, 0.f}, {-.85f, .1f}, {0.f, -.1f}, {.85f, 0.f}, {.75f, .8f}, {.05f, .65f}}},
+     {{-.85f, -.75f}, {-.1f, -.75f}, {-.1f, 0.f}, {-.85f, .1f},
+      {0.f, -.1f}, {.85f, 0.f}, {.75f, .8f}, {.05f, .65f}}},
     // Pairs of vertices make quads with the pair before: 8 vertices, 3 quads.
     // Quad i is 2i, 2i+1, 2i+3, 2i+2, so top, bottom, top, bottom runs
     // counter-clockwise (not around the quad as in GL_QUADS).
     {GL_QUAD_STRIP, "GL_QUAD_STRIP", {0.35f, 0.8f, 0.8f},
-     {{-.85f, .3f}, {-.85f, -.6f}, {-.3f, .55f}, {-.3f, -.75f}, {.3f, .75f}, {.3f, -.6f}, {.85f, .6f}, {.85f, -.3f}}},
+     {{-.85f, .3f}, {-.85f, -.6f}, {-.3f, .55f}, {-.3f, -.75f},
+      {.3f, .75f}, {.3f, -.6f}, {.85f, .6f}, {.85f, -.3f}}},
 };
 
 // A non-convex outline (a U), counter-clockwise.
@@ -104,18 +109,22 @@ void draw_vertex_numbers(const Primitive& p) {
   }
 }
 
-void draw_primitives_view(const gllab::State& s) {
-  const std::string& view = s.view();
-  const bool order = view == "vertex_order";
-  if (view == "wireframe") glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+// The three views of the six primitives differ only in how they are drawn.
+enum class Style { kLit, kWireframe, kVertexOrder };
+
+void draw_primitives(const gllab::State& s, Style style) {
+  const bool order = style == Style::kVertexOrder;
+  gllab::ortho_fit(s.width, s.height, 3.3, 2.5);
+  if (style == Style::kWireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   // Filled front faces, outlined back faces: the winding shows.
   if (order) glPolygonMode(GL_BACK, GL_LINE);
-  if (s.flag("lighting") && view == "default") gllab::enable_headlight();
+  if (s.flag("lighting") && style == Style::kLit) gllab::enable_headlight();
+  gllab::apply_orbit(s);  // right-drag, wheel, [0]: the camera (common/gl/scene.h)
   glShadeModel(GL_SMOOTH);
   for (std::size_t i = 0; i < std::size(kPrimitives); ++i) {
     enter_cell(i, s);
     draw_primitive(kPrimitives[i], order);
-    if (view == "wireframe") {  // the vertices themselves
+    if (style == Style::kWireframe) {  // the vertices themselves
       glPointSize(5.f);
       glBegin(GL_POINTS);
       for (const Vertex& v : kPrimitives[i].vertices) glVertex2f(v.x, v.y);
@@ -127,9 +136,13 @@ void draw_primitives_view(const gllab::State& s) {
   }
 }
 
+void draw_default(const gllab::State& s) { draw_primitives(s, Style::kLit); }
+void draw_wireframe(const gllab::State& s) { draw_primitives(s, Style::kWireframe); }
+void draw_vertex_order(const gllab::State& s) { draw_primitives(s, Style::kVertexOrder); }
+
 Vertex hex_corner(int k) {
   const double a = 2 * M_PI * k / kHexCorners;
-  return {kHexRadius * static_cast<float>(std::cos(a)), kHexRadius * static_cast<float>(std::sin(a))};
+  return {kHexRadius * float(std::cos(a)), kHexRadius * float(std::sin(a))};
 }
 float hex_z(int k) { return k % 2 ? -kHexLift : kHexLift; }
 
@@ -181,9 +194,10 @@ void draw_non_planar(bool as_polygon) {
   glEnd();
 }
 
-void draw_invalid_view(const gllab::State& s) {
+void draw_invalid_polygons(const gllab::State& s) {
+  gllab::ortho_fit(s.width, s.height, 3.3, 2.5);
   if (s.flag("lighting")) gllab::enable_headlight();
-  const char* names[2][2] = {{"GL_POLYGON", "6 triangles"}, {"GL_POLYGON", "6 triangles"}};
+  gllab::apply_orbit(s);
   for (int row = 0; row < 2; ++row) {
     for (int col = 0; col < 2; ++col) {
       glPushMatrix();
@@ -193,25 +207,20 @@ void draw_invalid_view(const gllab::State& s) {
       if (row == 0) draw_non_convex(col == 0);
       else draw_non_planar(col == 0);
       glPopMatrix();
-      const std::string verdict = col ? " (correct)" : " (undefined)";
-      gllab::draw_label(col ? 1.4 : -1.4, row ? -2.35 : 0.3, 0, names[row][col] + verdict, kLabel);
+      const char* verdict = col ? "6 triangles (correct)" : "GL_POLYGON (undefined)";
+      gllab::draw_label(col ? 1.4 : -1.4, row ? -2.35 : 0.3, 0, verdict, kLabel);
     }
   }
   gllab::draw_label(0, 2.35, 0, "non-convex outline", kLabel);
   gllab::draw_label(0, -0.1, 0, "non-planar outline", kLabel);
 }
 
-// init / display ----------------------------------------------------------
+// init ----------------------------------------------------------------------
+// Before every frame the runner clears the colour and depth buffers with this
+// colour; then it calls the view's draw function (the lab definition below).
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
-}
-
-void display(const gllab::State& s) {
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gllab::ortho_fit(s.width, s.height, 3.3, 2.5);
-  if (s.view() == "invalid_polygons") draw_invalid_view(s);
-  else draw_primitives_view(s);
 }
 
 }  // namespace
@@ -220,10 +229,13 @@ void display(const gllab::State& s) {
 gllab::Lab gllab::define_lab() {
   return {"01_immediate_mode",
           "lab 01 · immediate mode",
-          {{"default", "the six primitives, lit with glNormal3f"},
-           {"wireframe", "the same as outlines: the triangles and quads GL made"},
-           {"vertex_order", "vertices numbered and coloured in the order sent"},
-           {"invalid_polygons", "non-convex and non-planar GL_POLYGON vs triangles"}},
+          {{"default", "the six primitives, lit with glNormal3f", draw_default, gllab::kOrbit},
+           {"wireframe", "the same as outlines: the triangles and quads GL made", draw_wireframe,
+            gllab::kOrbit},
+           {"vertex_order", "vertices numbered and coloured in the order sent", draw_vertex_order,
+            gllab::kOrbit},
+           {"invalid_polygons", "non-convex and non-planar GL_POLYGON vs triangles",
+            draw_invalid_polygons, gllab::kOrbit}},
           {{"lighting", 1, 0, 1, "light the shapes (default, invalid_polygons)"},
            {"spin", 0, -180, 180, "turn each shape about its vertical axis, degrees"},
            {"flip", 0, 0, 1, "mirror each shape in x: reverses the winding"},
@@ -233,6 +245,5 @@ gllab::Lab gllab::define_lab() {
            {'R', "spin -15 degrees", "spin", -15},
            {'f', "flip winding (mirror in x)", "flip"},
            {'n', "primitive names on/off", "labels"}},
-          init,
-          display};
+          init};
 }

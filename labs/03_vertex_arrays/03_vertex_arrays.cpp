@@ -1,17 +1,18 @@
 // lab 03 · vertex arrays                                    difficulty: ★★☆☆
-// The torus sent as arrays (seed §1.3): glVertexPointer, glNormalPointer and
-// glColorPointer over separate arrays or one interleaved array, drawn with
-// glDrawArrays (every corner sent) or glDrawElements (shared vertices, indices).
+// The torus sent as arrays (lecture notes ch. 1, §1.3 Polygon rendering with
+// OpenGL, "Vertex arrays"): glVertexPointer, glNormalPointer and glColorPointer
+// over separate arrays or one interleaved array, drawn with glDrawArrays (every
+// corner sent) or glDrawElements (shared vertices, indices).
 // Notice: glDrawElements stores each vertex once; the overlay counts 6 times
 //   fewer vertices for the same triangles and the same picture.
 // Try: in wrong_stride press [s] until the stride is 36 bytes. Why does every
 //   smaller stride scramble the torus, and why is 0 not "tightly packed" here?
 // Keys: [l] separate/interleaved  [d] glDrawElements/glDrawArrays
-//   [s]/[S] stride +/-12 bytes  [+]/[-] detail  [r]/[R] spin  [n] labels  [h] help  [Esc] quit
+//   [s]/[S] stride +/-12 bytes  [+]/[-] detail  [n] labels
+//   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
 // Views: default, separate_vs_interleaved, draw_arrays_vs_elements, wrong_stride
 // Reference: reference_images/03_vertex_arrays__*.png
 
-#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,14 +24,15 @@
 
 namespace {
 
+using std::to_string;
+
 // Lab data (edit me) -------------------------------------------------------
 // The torus: 2k rings around z, k sides around the tube, 4k^2 triangles.
 constexpr int kDefaultDetail = 14;
 
 // One interleaved vertex: x y z, nx ny nz, r g b (gllab::interleaved).
-constexpr int kFloatsPerVertex = 9;
-constexpr GLsizei kStride = kFloatsPerVertex * sizeof(float);  // 36 bytes
-constexpr int kNormalOffset = 3, kColourOffset = 6;             // in floats
+constexpr GLsizei kStride = 9 * sizeof(float);       // 36 bytes
+constexpr int kNormalOffset = 3, kColourOffset = 6;  // in floats
 
 enum Layout { kSeparate = 0, kInterleaved = 1 };
 enum Call { kElements = 0, kArrays = 1 };
@@ -45,16 +47,14 @@ struct Arrays {
 
 const Arrays& arrays(int k) {
   static std::map<int, Arrays> made;
-  auto it = made.find(k);
-  if (it == made.end()) {
-    Arrays a;
+  Arrays& a = made[k];
+  if (a.shared.indices.empty()) {
     a.shared = gllab::make_torus(2 * k, k, 1.0, 0.4);
     a.flat = gllab::unshared(a.shared);
     a.shared_packed = gllab::interleaved(a.shared);
     a.flat_packed = gllab::interleaved(a.flat);
-    it = made.emplace(k, std::move(a)).first;
   }
-  return it->second;
+  return a;
 }
 
 // Drawing -------------------------------------------------------------------
@@ -86,93 +86,95 @@ void draw_torus(const Arrays& a, Layout layout, Call call, GLsizei stride = kStr
     // Vertices 0, 1, 2, ... in order: 3 per triangle, shared corners repeated.
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.vertex_count()));
   } else {
-    // Each index picks a stored vertex: the corners shared by 6 triangles are
-    // stored once.
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.indices.size()), GL_UNSIGNED_INT,
-                   m.indices.data());
+    // Each index picks a stored vertex: a corner of 6 triangles is stored once.
+    glDrawElements(GL_TRIANGLES, GLsizei(m.indices.size()), GL_UNSIGNED_INT, m.indices.data());
   }
   glDisableClientState(GL_COLOR_ARRAY);
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_VERTEX_ARRAY);
 }
 
-// Places a torus at (x, y), tilted towards the viewer, and draws it lit.
-void lit_torus(const gllab::State& s, float x, float y, float scale, Layout layout, Call call,
-               GLsizei stride = kStride) {
+// The projection, the light and the camera of every view.
+const Arrays& set_up(const gllab::State& s) {
+  gllab::ortho_fit(s.width, s.height, 3.3, 3.3);
   gllab::enable_headlight();
+  gllab::apply_orbit(s);  // right-drag, wheel, [0]: the camera (common/gl/scene.h)
+  return arrays(s.integer("detail"));
+}
+
+// Places a torus at (x, y), tilted towards the viewer, and draws it lit.
+void lit_torus(const Arrays& a, float x, float y, float scale, Layout layout, Call call,
+               GLsizei stride = kStride) {
   glPushMatrix();
   glTranslatef(x, y, 0.f);
   glScalef(scale, scale, scale);
   glRotatef(-55.f, 1.f, 0.f, 0.f);
-  glRotated(s.get("spin"), 0, 0, 1);
-  draw_torus(arrays(s.integer("detail")), layout, call, stride);
+  draw_torus(a, layout, call, stride);
   glPopMatrix();
-  glDisable(GL_LIGHTING);
 }
 
-std::vector<std::string> count_lines(const Arrays& a) {
-  return {"triangles:                 " + std::to_string(a.shared.triangle_count()),
-          "glDrawArrays   vertices:   " + std::to_string(a.flat.vertex_count()) + " (3 per triangle)",
-          "glDrawElements vertices:   " + std::to_string(a.shared.vertex_count()) + " stored once",
-          "               indices:    " + std::to_string(a.shared.indices.size()),
-          "[l] layout, [d] draw call: the picture must not change"};
+void label(const gllab::State& s, float x, float y, const std::string& text,
+           gllab::Rgb colour = kLabel) {
+  if (s.flag("labels")) gllab::draw_label(x, y, 0, text, colour);
 }
 
-void label(bool on, float x, float y, const std::string& text, gllab::Rgb colour = kLabel) {
-  if (on) gllab::draw_label(x, y, 0, text, colour);
+void draw_default(const gllab::State& s) {
+  const Arrays& a = set_up(s);
+  lit_torus(a, 0.f, 0.35f, 2.f, s.flag("layout") ? kInterleaved : kSeparate,
+            s.flag("call") ? kArrays : kElements);
+  // The counts are read from the data; neither layout nor call changes them.
+  const std::vector<std::string> lines = {
+      "triangles:                 " + to_string(a.shared.triangle_count()),
+      "glDrawArrays   vertices:   " + to_string(a.flat.vertex_count()) + " (3 per triangle)",
+      "glDrawElements vertices:   " + to_string(a.shared.vertex_count()) + " stored once",
+      "               indices:    " + to_string(a.shared.indices.size()),
+      "[l] layout, [d] draw call: the picture must not change"};  // bottom left, clear of [h]
+  const int top = s.height - 20 - gllab::kGlyphHeight * static_cast<int>(lines.size());
+  if (s.flag("labels")) gllab::draw_text_panel(8, top, lines, kLabel);
 }
 
-// init / display ----------------------------------------------------------
+void draw_layouts(const gllab::State& s) {
+  const Arrays& a = set_up(s);
+  lit_torus(a, -1.65f, 0.f, 1.05f, kSeparate, kElements);
+  lit_torus(a, 1.65f, 0.f, 1.05f, kInterleaved, kElements);
+  label(s, -1.65f, 1.5f, "separate arrays");
+  label(s, -1.65f, -1.5f, "stride 0", kDim);
+  label(s, 1.65f, 1.5f, "one interleaved array");
+  label(s, 1.65f, -1.5f, "stride " + to_string(kStride) + " bytes", kDim);
+}
+
+void draw_calls(const gllab::State& s) {
+  const Arrays& a = set_up(s);
+  lit_torus(a, -1.65f, 0.5f, 1.05f, kSeparate, kArrays);
+  lit_torus(a, 1.65f, 0.5f, 1.05f, kSeparate, kElements);
+  label(s, -1.65f, 2.f, "glDrawArrays");
+  label(s, 1.65f, 2.f, "glDrawElements");
+  label(s, -1.65f, -1.f, to_string(a.flat.vertex_count()) + " vertices sent", kDim);
+  label(s, 1.65f, -1.f, to_string(a.shared.vertex_count()) + " vertices stored", kDim);
+  label(s, 1.65f, -1.35f, "+ " + to_string(a.shared.indices.size()) + " indices", kDim);
+  label(s, 0.f, -2.2f, "same " + to_string(a.shared.triangle_count()) + " triangles, same picture");
+}
+
+void draw_wrong_stride(const gllab::State& s) {
+  const Arrays& a = set_up(s);
+  const GLsizei stride = 4 * (s.integer("stride") / 4);  // floats are 4-byte aligned
+  lit_torus(a, -1.65f, 0.f, 1.05f, kInterleaved, kElements);
+  // Wrong unless stride is 36: GL reads vertex i at i * stride bytes, so it takes
+  // normals and colours for positions (stride 0 means "packed": 12 bytes). Garbage
+  // triangles overlap in shared planes: without the depth test the last one wins.
+  if (stride != kStride) glDisable(GL_DEPTH_TEST);
+  lit_torus(a, 1.65f, 0.f, 1.05f, kInterleaved, kElements, stride);
+  glEnable(GL_DEPTH_TEST);
+  label(s, -1.65f, 1.5f, "interleaved, stride " + to_string(kStride));
+  label(s, 1.65f, 1.5f, "interleaved, stride " + to_string(stride));
+  label(s, 0.f, -2.2f, stride == kStride ? "right: one whole vertex per step"
+                                          : "wrong: GL reads x y z from normals and colours");
+}
+
+// init ----------------------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
-}
-
-void display(const gllab::State& s) {
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gllab::ortho_fit(s.width, s.height, 3.3, 3.3);
-  glShadeModel(GL_SMOOTH);
-  const Arrays& a = arrays(s.integer("detail"));
-  const bool on = s.flag("labels");
-  const std::string& view = s.view();
-  if (view == "separate_vs_interleaved") {
-    lit_torus(s, -1.65f, 0.f, 1.05f, kSeparate, kElements);
-    lit_torus(s, 1.65f, 0.f, 1.05f, kInterleaved, kElements);
-    label(on, -1.65f, 1.5f, "separate arrays");
-    label(on, -1.65f, -1.5f, "stride 0", kDim);
-    label(on, 1.65f, 1.5f, "one interleaved array");
-    label(on, 1.65f, -1.5f, "stride " + std::to_string(kStride) + " bytes", kDim);
-  } else if (view == "draw_arrays_vs_elements") {
-    lit_torus(s, -1.65f, 0.5f, 1.05f, kSeparate, kArrays);
-    lit_torus(s, 1.65f, 0.5f, 1.05f, kSeparate, kElements);
-    label(on, -1.65f, 2.f, "glDrawArrays");
-    label(on, 1.65f, 2.f, "glDrawElements");
-    label(on, -1.65f, -1.f, std::to_string(a.flat.vertex_count()) + " vertices sent", kDim);
-    label(on, 1.65f, -1.f, std::to_string(a.shared.vertex_count()) + " vertices stored", kDim);
-    label(on, 1.65f, -1.35f, "+ " + std::to_string(a.shared.indices.size()) + " indices", kDim);
-    label(on, 0.f, -2.2f, "same " + std::to_string(a.shared.triangle_count()) + " triangles, same picture");
-  } else if (view == "wrong_stride") {
-    const GLsizei stride = 4 * (s.integer("stride") / 4);  // floats are 4-byte aligned
-    lit_torus(s, -1.65f, 0.f, 1.05f, kInterleaved, kElements);
-    // Wrong unless stride is 36: GL reads vertex i at i * stride bytes, so it
-    // takes normals and colours for positions. Stride 0 means "packed": 12 bytes.
-    // Garbage triangles overlap in shared planes, where the depth test decides
-    // by rounding; without it the last one drawn wins, the same in any driver.
-    if (stride != kStride) glDisable(GL_DEPTH_TEST);
-    lit_torus(s, 1.65f, 0.f, 1.05f, kInterleaved, kElements, stride);
-    label(on, -1.65f, 1.5f, "interleaved, stride " + std::to_string(kStride));
-    label(on, 1.65f, 1.5f, "interleaved, stride " + std::to_string(stride));
-    label(on, 0.f, -2.2f, stride == kStride ? "right: one whole vertex per step"
-                                            : "wrong: GL reads x y z from normals and colours");
-  } else {
-    const Layout layout = s.flag("layout") ? kInterleaved : kSeparate;
-    const Call call = s.flag("call") ? kArrays : kElements;
-    lit_torus(s, 0.f, 0.35f, 2.f, layout, call);
-    // The counts are read from the data; neither layout nor call changes them.
-    const std::vector<std::string> lines = count_lines(a);  // bottom left, clear of [h] help
-    const int top = s.height - 20 - gllab::kGlyphHeight * static_cast<int>(lines.size());
-    if (on) gllab::draw_text_panel(8, top, lines, kLabel);
-  }
 }
 
 }  // namespace
@@ -181,25 +183,18 @@ void display(const gllab::State& s) {
 gllab::Lab gllab::define_lab() {
   return {"03_vertex_arrays",
           "lab 03 · vertex arrays",
-          {{"default", "the lit torus from glDrawElements, with vertex counts"},
-           {"separate_vs_interleaved", "stride 0 on three arrays vs stride 36 on one"},
-           {"draw_arrays_vs_elements", "every corner sent vs shared vertices + indices"},
-           {"wrong_stride", "the interleaved array read with a wrong stride"}},
+          {{"default", "the lit torus with vertex counts", draw_default, kOrbit},
+           {"separate_vs_interleaved", "stride 0 on 3 arrays, 36 on one", draw_layouts, kOrbit},
+           {"draw_arrays_vs_elements", "every corner sent vs shared + indices", draw_calls, kOrbit},
+           {"wrong_stride", "the interleaved array, a wrong stride", draw_wrong_stride, kOrbit}},
           {{"layout", 0, 0, 1, "default: separate arrays (0) or one interleaved array (1)"},
            {"call", 0, 0, 1, "default: glDrawElements (0) or glDrawArrays (1)"},
            {"stride", 0, 0, kStride, "wrong_stride: the stride of the right torus, bytes"},
            {"detail", kDefaultDetail, 3, 60, "torus sides k: 2k rings, 4k^2 triangles"},
-           {"spin", 0, -180, 180, "turn the torus about its axis, degrees"},
            {"labels", 1, 0, 1, "labels and counts on/off"}},
-          {{'l', "separate / interleaved arrays", "layout"},
-           {'d', "glDrawElements / glDrawArrays", "call"},
-           {'s', "stride +12 bytes (wrong_stride)", "stride", +12},
-           {'S', "stride -12 bytes (wrong_stride)", "stride", -12},
-           {'+', "torus detail +2", "detail", +2},
-           {'-', "torus detail -2", "detail", -2},
-           {'r', "spin +15 degrees", "spin", +15},
-           {'R', "spin -15 degrees", "spin", -15},
+          {{'l', "separate / interleaved", "layout"}, {'d', "glDrawElements / Arrays", "call"},
+           {'s', "stride +12 bytes", "stride", +12}, {'S', "stride -12 bytes", "stride", -12},
+           {'+', "torus detail +2", "detail", +2}, {'-', "torus detail -2", "detail", -2},
            {'n', "labels and counts on/off", "labels"}},
-          init,
-          display};
+          init};
 }

@@ -1,149 +1,199 @@
 // lab 05 · four ways to submit a mesh                       difficulty: ★★☆☆
-// One lit torus sent to OpenGL four ways (seed §1.3): immediate mode, a
-// display list, vertex arrays and a vertex buffer object. The four paths are
-// in common/gl/submission.cpp (one definition, so bench/submission_bench times
-// exactly what this lab draws); labs 01-04 teach each one.
-// Notice: the four views are byte-identical (tests/labs checks it): the same
-//   triangles give the same pixels. Only the cost differs, and the window's
-//   panel measures it live for every path at the current mesh size.
+// One lit torus sent to OpenGL four ways, each written out below (lecture notes
+// ch. 1, §1.3 Polygon rendering with OpenGL: "Direct rendering", "Display lists",
+// "Vertex arrays", "Vertex buffer objects (VBO)"); bench/submission_bench times them.
+// Notice: the four views are byte-identical (declared so): the same triangles give
+//   the same pixels. Only the cost differs; the window's panel measures it live.
 // Try: in the window press [+] up to 1M triangles. Which path keeps its
-//   triangles/s, which falls behind? Then read the README: why is the gap
-//   ten times wider on a GPU?
-// Keys: [+]/[-] mesh size x2 / /2  [h] help  [Esc] quit
+//   triangles/s? Then read the README: why is the gap ten times wider on a GPU?
+// Keys: [+]/[-] mesh size x2 / /2
+//   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
 // Views: immediate, display_list, vertex_arrays, vbo
 // Reference: reference_images/05_submission_modes__*.png
 
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "gl/gl.h"
 #include "gl/scene.h"
-#include "gl/submission.h"
+#include "gl/throughput.h"
 #include "harness/lab.h"
 #include "mesh/indexed_mesh.h"
 
-namespace {
+using gllab::IndexedMesh;
 
-using gllab::Submit;
+// The four paths -------------------------------------------------------------
+// In namespace lab05, not the anonymous one: bench/submission_bench.cpp links this
+// file's object code (target 05_submission_modes_code) and times these functions.
+// Every path draws the whole mesh as GL_TRIANGLES: the same colour, normal and
+// position per vertex, in the same order.
+namespace lab05 {
+const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
-// Lab data (edit me) -------------------------------------------------------
-constexpr double kSpinPerSecond = 12;   // degrees about the ring's axis, window only
-constexpr double kMeasureSeconds = 0.02; // time one path per frame for at least this
-
-// The mesh for the current size and the GL objects its list and VBO paths
-// keep (common/gl/submission.cpp holds the four paths: read it beside this
-// file). A new size releases the old objects.
-struct Current {
-  std::size_t asked = 0;  // 2^size_log2, the key of this cache
-  gllab::SubmittedMesh mesh;
-} g_current;
-
-// Live measurements (window only): Mtri/s per path, for g_current.asked.
-struct Throughput {
-  double mtri_s[gllab::kSubmitPaths] = {0, 0, 0, 0};
-  int next = 0, measured = 0;
-} g_rate;
-
-gllab::SubmittedMesh& mesh_for(std::size_t asked) {
-  if (g_current.asked != asked) {
-    g_current.mesh.release();
-    g_current = Current{asked, gllab::SubmittedMesh(gllab::torus_with_triangles(asked))};
-    g_rate = Throughput{};
+// 1. Immediate mode: three calls per vertex, for every vertex, every frame.
+void draw_immediate(const IndexedMesh& m) {
+  glBegin(GL_TRIANGLES);
+  for (std::uint32_t i : m.indices) {
+    glColor3fv(&m.colours[3 * i]);
+    glNormal3fv(&m.normals[3 * i]);
+    glVertex3fv(&m.positions[3 * i]);
   }
-  return g_current.mesh;
+  glEnd();
 }
 
-void release() { g_current.mesh.release(); }
-
-// Window only: time one path (round-robin, one per frame) with glFinish on
-// both sides, so the time covers GL's work and not just the calls.
-void measure_next_path(std::size_t asked) {
-  const Submit path = Submit(g_rate.next);
-  gllab::SubmittedMesh& mesh = mesh_for(asked);
-  mesh.prepare(path);  // compiling the list or filling the buffers is not timed
-  glFinish();
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  int draws = 0;
-  double seconds = 0;
-  do {
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    mesh.draw(path);
-    glFinish();
-    ++draws;
-    seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  } while (seconds < kMeasureSeconds);
-  g_rate.mtri_s[g_rate.next] = draws * double(mesh.mesh().triangle_count()) / seconds / 1e6;
-  g_rate.next = (g_rate.next + 1) % gllab::kSubmitPaths;
-  if (g_rate.measured < gllab::kSubmitPaths) ++g_rate.measured;
+// 2. Display list: the same calls recorded once (GL_COMPILE stores them
+// without drawing); one glCallList a frame replays them.
+GLuint compile_list(const IndexedMesh& m) {
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  draw_immediate(m);
+  glEndList();
+  return list;
 }
 
-std::string with_commas(std::size_t n) {
-  std::string digits = std::to_string(n);
-  for (int k = int(digits.size()) - 3; k > 0; k -= 3) digits.insert(std::size_t(k), ",");
-  return digits;
+// 3. Vertex arrays: pointers into our memory, read by GL at every draw;
+// glDrawElements takes vertex indices[k] for k = 0, 1, ...
+void draw_vertex_arrays(const IndexedMesh& m) {
+  glEnableClientState(GL_VERTEX_ARRAY);  // client state: the arrays glDrawElements reads
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, m.positions.data());  // stride 0: tightly packed
+  glNormalPointer(GL_FLOAT, 0, m.normals.data());
+  glColorPointer(3, GL_FLOAT, 0, m.colours.data());
+  glDrawElements(GL_TRIANGLES, GLsizei(m.indices.size()), GL_UNSIGNED_INT, m.indices.data());
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
 }
 
-// init / display ----------------------------------------------------------
+// 4. VBO: the data goes into two buffer objects once, GL_STATIC_DRAW: the
+// vertices interleaved (x y z nx ny nz r g b, 36 bytes each) and the indices.
+void fill_buffers(const IndexedMesh& m, GLuint buffers[2]) {
+  const std::vector<float> v = gllab::interleaved(m);
+  glGenBuffers(2, buffers);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
+               m.indices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+// With the buffers bound, the pointers are byte offsets into them, and so are the indices.
+void draw_buffers(GLsizei index_count, const GLuint buffers[2]) {
+  constexpr GLsizei kStride = 9 * sizeof(float);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+  glVertexPointer(3, GL_FLOAT, kStride, offset(0));
+  glNormalPointer(GL_FLOAT, kStride, offset(3 * sizeof(float)));
+  glColorPointer(3, GL_FLOAT, kStride, offset(6 * sizeof(float)));
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, offset(0));
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+}
+
+// Path 0 to 3, the order of the views.
+void draw(int path, const IndexedMesh& m, GLuint list, const GLuint buffers[2]) {
+  if (path == 0) draw_immediate(m);
+  if (path == 1) glCallList(list);
+  if (path == 2) draw_vertex_arrays(m);
+  if (path == 3) draw_buffers(GLsizei(m.indices.size()), buffers);
+}
+
+// What compile_list and fill_buffers made (GL ignores the names 0).
+void release(GLuint list, const GLuint buffers[2]) {
+  glDeleteLists(list, 1);
+  glDeleteBuffers(2, buffers);
+}
+
+// The scene every view draws the torus in (and the bench times it in).
+void set_up_scene(const gllab::State& s) {
+  gllab::ortho_fit(s.width, s.height, 1.7, 1.7);
+  gllab::enable_headlight();
+  gllab::apply_orbit(s);  // right-drag, wheel, [0]: the camera (common/gl/scene.h)
+  glTranslatef(0.f, -0.15f, 0.f);
+  glRotatef(-55.f, 1.f, 0.f, 0.f);
+  glRotated(12 * s.time, 0, 0, 1);  // 12 degrees a second: the window's frames keep coming
+}
+}  // namespace lab05
+
+namespace {
+// The torus at the current size and what the list and VBO paths made of it,
+// a cache keyed by the size: a new size releases the old list and buffers.
+struct Torus {
+  std::size_t asked = 0;  // 2^size_log2 triangles, asked of torus_with_triangles
+  IndexedMesh mesh;
+  GLuint list = 0, buffers[2] = {0, 0};
+} g_torus;
+
+gllab::Throughput g_rate({"immediate", "display list", "vertex arrays", "VBO"});  // window only
+
+const Torus& torus(const gllab::State& s) {
+  const std::size_t asked = std::size_t{1} << s.integer("size_log2");
+  if (g_torus.asked == asked) return g_torus;
+  lab05::release(g_torus.list, g_torus.buffers);
+  g_torus.asked = asked;
+  g_torus.mesh = gllab::torus_with_triangles(asked);
+  g_torus.list = lab05::compile_list(g_torus.mesh);
+  lab05::fill_buffers(g_torus.mesh, g_torus.buffers);
+  g_rate.reset();
+  return g_torus;
+}
+
+void shutdown() { lab05::release(g_torus.list, g_torus.buffers); g_torus = {}; }
+
+// Drawing -------------------------------------------------------------------
+// The same scene and panel for every path: the four images compare byte for byte.
+void draw_path_view(const gllab::State& s, int path) {
+  const Torus& t = torus(s);
+  const IndexedMesh& m = t.mesh;
+  lab05::set_up_scene(s);
+  // Window only: time one path a frame (round-robin) before this frame draws.
+  const auto timed = [&t](int p) { lab05::draw(p, t.mesh, t.list, t.buffers); };
+  if (s.interactive) g_rate.measure_next(timed, m.triangle_count());
+  lab05::draw(path, m, t.list, t.buffers);
+  using gllab::with_commas;
+  const std::string vertices = with_commas(m.vertex_count()) + " vertices";
+  gllab::draw_text_panel(8, 8, {with_commas(m.triangle_count()) + " triangles, " + vertices,
+                                with_commas(m.indices.size()) + " indices, 3 per triangle"},
+                         {0.9f, 0.95f, 1.f});
+  if (s.interactive && g_rate.complete()) g_rate.draw_table(path, s.height);
+}
+
+void immediate_view(const gllab::State& s) { draw_path_view(s, 0); }
+void display_list_view(const gllab::State& s) { draw_path_view(s, 1); }
+void vertex_arrays_view(const gllab::State& s) { draw_path_view(s, 2); }
+void vbo_view(const gllab::State& s) { draw_path_view(s, 3); }
+
+// init ----------------------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.12f, 0.13f, 0.16f, 1.f);
-}
-
-void display(const gllab::State& s) {
-  const std::size_t asked = std::size_t{1} << s.integer("size_log2");
-  const Submit path = Submit(s.view_index());  // the views are the paths, in order
-  gllab::ortho_fit(s.width, s.height, 1.7, 1.7);
-  gllab::enable_headlight();
-  glTranslatef(0.f, -0.15f, 0.f);
-  glRotatef(-55.f, 1.f, 0.f, 0.f);
-  glRotated(kSpinPerSecond * s.time, 0, 0, 1);  // the window's clock keeps the frames coming
-  // Timings before the frame's own clear: they never reach its pixels, and a
-  // frame shows them only once all four paths are measured.
-  if (s.interactive) measure_next_path(asked);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  mesh_for(asked).draw(path);
-
-  // The same panel for every path, so the four images can be compared byte for byte.
-  const gllab::IndexedMesh& m = g_current.mesh.mesh();
-  std::vector<std::string> lines = {
-      with_commas(m.triangle_count()) + " triangles, " + with_commas(m.vertex_count()) + " vertices",
-      with_commas(m.indices.size()) + " indices, 3 per triangle"};
-  gllab::draw_text_panel(8, 8, lines, {0.9f, 0.95f, 1.f});
-  if (s.interactive && g_rate.measured == gllab::kSubmitPaths) {
-    lines = {"path            Mtri/s   / immediate"};
-    for (int p = 0; p < gllab::kSubmitPaths; ++p) {
-      char row[64];
-      std::snprintf(row, sizeof row, "%-14s %7.2f   %6.2fx%s", gllab::kSubmitNames[p], g_rate.mtri_s[p],
-                    g_rate.mtri_s[p] / g_rate.mtri_s[0], p == int(path) ? "  <" : "");
-      lines.push_back(row);
-    }
-    gllab::draw_text_panel(8, s.height - 8 - (gllab::kSubmitPaths + 2) * gllab::kGlyphHeight, lines, {1.f, 0.9f, 0.6f});
-  }
 }
 
 }  // namespace
 
 // Lab definition -----------------------------------------------------------
 gllab::Lab gllab::define_lab() {
-  gllab::Lab lab{"05_submission_modes",
-                 "lab 05 · four ways to submit a mesh",
-                 {{"immediate", "glBegin/glColor/glNormal/glVertex/glEnd, every frame"},
-                  {"display_list", "the same calls compiled once, glCallList per frame"},
-                  {"vertex_arrays", "client arrays + glDrawElements with an index array"},
-                  {"vbo", "interleaved buffer + element buffer, uploaded once"}},
-                 {{"size_log2", 14, 10, 20, "about 2^size_log2 triangles (10: 1k .. 20: 1M)"}},
-                 {{'+', "mesh size x2 (up to 1M triangles)", "size_log2", +1},
-                  {'-', "mesh size /2 (down to 1k)", "size_log2", -1}},
-                 init,
-                 display};
-  // display() reads State::time (a slow spin), so the window redraws
-  // continuously and the timings stay live; headless renders use --time.
-  lab.animated = true;
-  lab.shutdown = release;  // the list and buffers, while the context is current
+  gllab::Lab lab{
+      "05_submission_modes", "lab 05 · four ways to submit a mesh",
+      {{"immediate", "glBegin/glColor/glNormal/glVertex/glEnd each frame", immediate_view, kOrbit},
+       {"display_list", "the same calls compiled once", display_list_view, kOrbit, "immediate"},
+       {"vertex_arrays", "client arrays, glDrawElements", vertex_arrays_view, kOrbit, "immediate"},
+       {"vbo", "interleaved + element buffer, filled once", vbo_view, kOrbit, "immediate"}},
+      {{"size_log2", 14, 10, 20, "about 2^size_log2 triangles (10: 1k .. 20: 1M)"}},
+      {{'+', "mesh size x2 (up to 1M)", "size_log2", +1}, {'-', "mesh size /2", "size_log2", -1}},
+      init};
+  lab.animated = true;  // the views read State::time: the window's timings stay live
+  lab.shutdown = shutdown;  // the list and buffers, while the context is current
   return lab;
 }

@@ -325,7 +325,7 @@ TEST(GluNurbsCapture, UntrimmedGridHasTwoTrianglesPerStepCell) {
 }
 
 TEST(GluNurbsCapture, SameVerticesWithAndWithoutAContext) {
-  // The data-independent methods must not depend on GL state (DESIGN.md).
+  // The data-independent methods must not depend on GL state (docs/glu.md).
   const BsplineSurface& s = suite_surface("trimmed_nurbs_outer_disk").surface;
   GluNurbsProperties object;
   object.sampling_method = GLU_OBJECT_PARAMETRIC_ERROR;

@@ -34,7 +34,7 @@ void init() {
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
 }
 
-void display(const gllab::State& s) {
+void draw(const gllab::State& s) {
   glClearColor(0.1f, 0.1f, 0.15f, 1.f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   gllab::ortho_fit(s.width, s.height, 1.2, 1.2);
@@ -67,14 +67,12 @@ void display(const gllab::State& s) {
 gllab::Lab gllab::define_lab() {
   return {"glut_shapes_lab",
           "test fixture · glut shapes, window vs headless",
-          {{"default", "one glut shape call, lit, solid ones textured"}},
+          {{"default", "one glut shape call, lit, solid ones textured", draw}},
           {{"shape", 0, 0, double(std::size(gllab::kGlutShapes) - 1), "index in kGlutShapes (canonical arguments)"},
            {"solid", 1, 0, 1, "glutSolid* (1) or glutWire* (0)"},
            {"stacks", 0, 0, 64, "0: the shape; else draw_glut_sphere(slices, stacks)"},
            {"slices", 0, 0, 128, "0: 2 * stacks"},
            {"depth", 1, 0, 1, "depth test on (1) or off (0)"}},
           {},
-          init,
-          display,
-          nullptr};
+          init};
 }

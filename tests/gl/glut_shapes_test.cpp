@@ -4,7 +4,7 @@
 // Origins of the expectations:
 // - freeglut itself: each recorded call is drawn with real freeglut in a
 //   window under Xvfb, and with the replay both in a window (same renderer:
-//   any differing pixel is a replay error) and headless (DESIGN.md measured
+//   any differing pixel is a replay error) and headless (docs/platform.md: measured
 //   llvmpipe through GLX and OSMesa byte-identical for lit polygons).
 // - the recorder: re-recording now must give the committed file, else
 //   freeglut (or the recorder) changed and the recording must be redone.

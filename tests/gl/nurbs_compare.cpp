@@ -279,7 +279,7 @@ Image render_glu_surface(const BsplineSurface& surface, const BsplineSurface& fr
   const ParamInterval du = spline::domain_u(framing), dv = spline::domain_v(framing);
   GluNurbs glu(domain_distance(du.b - du.a, dv.b - dv.a));
   begin_frame(box_of(framing.P), true);
-  // GLU's surfaces get normals only with GL_AUTO_NORMAL (DESIGN.md).
+  // GLU's surfaces get normals only with GL_AUTO_NORMAL (docs/glu.md).
   if (auto_normal) glEnable(GL_AUTO_NORMAL);
   glu.draw_surface(surface, "suite surface", feed);
   return end_frame();
@@ -585,7 +585,7 @@ std::string comparison_summary() {
         score_images(render_glu_surface(coarse.surface, coarse.surface), render_own_surface(coarse.surface, coarse.surface));
     md << "\n## A GLU artefact: coarse polyline trims\n\n"
        << "`" << coarse.name << "`: " << coarse.what << ". GLU does not refine `gluPwlCurve` edges, so along the loop's "
-       << "long edges its surface follows straight chords, and slivers fan from the corners (DESIGN.md); the own "
+       << "long edges its surface follows straight chords, and slivers fan from the corners (docs/glu.md); the own "
        << "tessellator refines trim edges. The vertices still agree (max distance " << fmt("%.2e", n.max_distance)
        << ", normals " << fmt("%.4f", n.max_normal_angle) << "°), the image does not: " << percent(img.share())
        << " mismatched. The suite therefore feeds the same loop densified (`trimmed_nurbs_circle_hole`).\n";

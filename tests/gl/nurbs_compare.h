@@ -28,12 +28,12 @@ namespace gllab::testing {
 
 // ---- tolerances, with where they come from -------------------------------------
 
-/// GLU computes in float (24-bit mantissa, about 6e-8 relative): DESIGN.md
+/// GLU computes in float (24-bit mantissa, about 6e-8 relative): docs/glu.md
 /// measured its tessellator vertices within about 1e-6 of the true surface.
 /// 1e-5 of the box diagonal leaves a factor of 10 over that, and is 1000
 /// times smaller than the 1 % mistakes the negative checks make.
 inline constexpr double kDistanceTolerance = 1e-5;
-/// DESIGN.md measured GLU's normals within 0.02 degrees; 0.1 leaves a factor 5.
+/// docs/glu.md: GLU's normals measured within 0.02 degrees; 0.1 leaves a factor 5.
 inline constexpr double kNormalToleranceDeg = 0.1;
 /// GLU's (u, v) come back through a float texture map: a vertex whose u is
 /// this close (relative to the domain width) to an interior knot where the

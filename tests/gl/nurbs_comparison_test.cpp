@@ -212,7 +212,7 @@ TEST(NurbsNegativeChecks, NotPremultipliedWeightsBendTheNormals) {
 }
 
 TEST(NurbsGluArtefact, CoarsePolylineTrimFailsTheImageButNotTheNumbers) {
-  // DESIGN.md: GLU does not subdivide gluPwlCurve edges. On the example file's
+  // docs/glu.md: GLU does not subdivide gluPwlCurve edges. On the example file's
   // 5-point outer loop its vertices are right and its picture is not.
   const ImageContext context(kImageSize, kImageSize);
   const SurfaceCase coarse = coarse_trim_example();

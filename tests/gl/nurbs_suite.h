@@ -6,7 +6,7 @@
 // table) and one line saying what it exercises. The data is written here or
 // read from examples/ (named in the case). Polyline trims are densified
 // (dense_loop): GLU does not subdivide gluPwlCurve edges and fans slivers from
-// a coarse polyline's corners (DESIGN.md), which would compare GLU's slivers
+// a coarse polyline's corners (docs/glu.md), which would compare GLU's slivers
 // rather than the surface; the one example file with a coarse 5-point loop is
 // kept as it is, to show what that costs.
 #pragma once
@@ -46,7 +46,7 @@ std::vector<SurfaceCase> surface_suite();
 
 /// examples/trimmed_nurbs_surface.json as it is, with its coarse 5-point
 /// polyline outer loop: GLU fans slivers from its corners and does not follow
-/// the surface along the loop's long edges (DESIGN.md). Kept out of the
+/// the surface along the loop's long edges (docs/glu.md). Kept out of the
 /// suite; nurbs_comparison_test.cpp shows that GLU artefact on it.
 SurfaceCase coarse_trim_example();
 

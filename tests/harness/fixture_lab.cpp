@@ -7,10 +7,10 @@
 //   mistake=1  wrong colour: one shape's glColor has red and blue swapped
 //   mistake=2  missing primitive: one triangle of the fan is not drawn
 //   mistake=3  moved vertex: one vertex off by 1% of the 512-pixel frame
-// and `gl_error=1` makes display() raise GL_INVALID_ENUM on purpose;
+// and `gl_error=1` makes draw() raise GL_INVALID_ENUM on purpose;
 // `throws=1` makes it throw std::invalid_argument half-way, with a matrix and
 // an attribute group still pushed (as the spline core does on bad input).
-// `throw_after_text=1` throws from display() after its text is drawn.
+// `throw_after_text=1` throws from draw() after its text is drawn.
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -24,7 +24,7 @@ namespace {
 constexpr float kHalfBox = 3.f;                     // ortho_fit half size: the box is 6 units
 constexpr float kOnePercent = 0.01f * 2 * kHalfBox;  // 1% of the box, ~5 px at 512 px
 
-void display(const gllab::State& s) {
+void draw(const gllab::State& s) {
   const int mistake = s.integer("mistake");
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   gllab::ortho_fit(s.width, s.height, kHalfBox, kHalfBox);
@@ -73,9 +73,9 @@ void display(const gllab::State& s) {
   if (s.flag("throws")) {
     glPushMatrix();
     glPushAttrib(GL_CURRENT_BIT);
-    throw std::invalid_argument("fixture: thrown in display() on purpose");
+    throw std::invalid_argument("fixture: thrown in draw() on purpose");
   }
-  if (s.flag("throw_after_text")) throw std::invalid_argument("display() gave up after its label");
+  if (s.flag("throw_after_text")) throw std::invalid_argument("draw() gave up after its label");
 }
 
 }  // namespace
@@ -83,13 +83,11 @@ void display(const gllab::State& s) {
 gllab::Lab gllab::define_lab() {
   return {"fixture_lab",
           "test fixture · mistakes students make",
-          {{"default", "lit polygons, lines, points and text"}},
+          {{"default", "lit polygons, lines, points and text", draw}},
           {{"mistake", 0, 0, 3, "0 none, 1 wrong colour, 2 missing triangle, 3 moved vertex"},
-           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in display()"},
-           {"throws", 0, 0, 1, "throw std::invalid_argument in display()"},
-           {"throw_after_text", 0, 0, 1, "throw std::invalid_argument from display() after drawing text"}},
+           {"gl_error", 0, 0, 1, "raise GL_INVALID_ENUM in draw()"},
+           {"throws", 0, 0, 1, "throw std::invalid_argument in draw()"},
+           {"throw_after_text", 0, 0, 1, "throw std::invalid_argument from draw() after drawing text"}},
           {},
-          [] { glEnable(GL_DEPTH_TEST); },
-          display,
-          nullptr};
+          [] { glEnable(GL_DEPTH_TEST); }};
 }

@@ -115,7 +115,7 @@ TEST(HeadlessCli, GlErrorInDisplayExitsNonZeroAndNamesTheError) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-// A lab's display() that throws (the spline core on bad input, e.g. two
+// A view's draw function that throws (the spline core on bad input, e.g. two
 // interpolation nodes dragged onto one another) is a frame error like a GL
 // error: one line naming the view and the message, exit 1, no image. The
 // matrices and attributes it left pushed are popped (no GL stack error).
@@ -126,12 +126,12 @@ TEST(HeadlessCli, ExceptionInDisplayIsAFrameErrorNamingTheView) {
       run_process({gllab::testing::kFixtureLab.string(), "--set", "throws=1", "--out", out.string()});
   EXPECT_EQ(r.exit_status, kFailureStatus);
   EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("view 'default': fixture: thrown in display() on purpose"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("view 'default': fixture: thrown in draw() on purpose"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("GL_STACK"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-// An exception from display() after text was drawn: one line and exit 1, not
+// An exception from a view's draw after text was drawn: one line and exit 1, not
 // a crash (Mesa crashed destroying the context with glBitmap calls still
 // queued; the headless context now finishes before it is destroyed).
 TEST(HeadlessCli, ExceptionInDisplayAfterTextIsOneLineNotACrash) {
@@ -141,7 +141,7 @@ TEST(HeadlessCli, ExceptionInDisplayAfterTextIsOneLineNotACrash) {
       {gllab::testing::kFixtureLab.string(), "--set", "throw_after_text=1", "--out", out.string()});
   EXPECT_EQ(r.exit_status, kFailureStatus) << r.err;
   EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("display() gave up after its label"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("draw() gave up after its label"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

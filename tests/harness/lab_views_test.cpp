@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
 
 #include "image/compare.h"
 #include "image/image.h"
+#include "image/pam.h"
 #include "test_support.h"
 
 namespace {
@@ -124,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(Labs, EveryErrorView, ::testing::ValuesIn(all_views(tru
 
 // The window program draws every view through GLX (--capture-views, one
 // window); under Xvfb the pixels must equal the headless (OSMesa) renders.
-// DESIGN.md measured them byte-identical, so any difference at all fails
+// docs/platform.md: measured byte-identical, so any difference at all fails
 // (and so the grading metric of a window render is 0: README "Grading").
 class EveryLabWindow : public ::testing::TestWithParam<std::string> {};
 
@@ -146,6 +149,7 @@ TEST_P(EveryLabWindow, EveryViewUnderXvfbEqualsHeadlessRender) {
   int compared = 0;
   for (std::string view; std::getline(views, view);) {
     if (view.find(" expect_error") != std::string::npos) continue;  // error views: no picture (EveryErrorView)
+    view = view.substr(0, view.find(' '));  // "display_list same_as=immediate"
     ++compared;
     const auto window_png = dir / (lab + "__" + view + ".png"), headless_png = dir / "headless.png";
     ASSERT_TRUE(std::filesystem::exists(window_png)) << window_png;
@@ -158,5 +162,51 @@ TEST_P(EveryLabWindow, EveryViewUnderXvfbEqualsHeadlessRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Labs, EveryLabWindow, ::testing::ValuesIn(gllab::testing::lab_ids()));
+
+// Two views of a lab never show the same picture, unless the lab declares it
+// on purpose (View::same_as, "name same_as=other" in --list-views: lab 05's
+// four submission paths). A view that falls through to another's drawing
+// fails here. Every view (error views aside) is rendered in one run and the
+// frames are compared byte for byte; a declared pair must be identical.
+class EveryLabsViews : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryLabsViews, DifferUnlessDeclaredTheSame) {
+  const std::string lab = GetParam();
+  const gllab::ProcessResult list = run_process({headless(lab), "--list-views"});
+  ASSERT_EQ(list.exit_status, 0) << list.err;
+  std::vector<std::string> names;
+  std::map<std::string, std::string> same_as;  // view -> the view it equals on purpose
+  std::stringstream in(list.out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.find(" expect_error") != std::string::npos) continue;
+    const std::string name = line.substr(0, line.find(' '));
+    const std::size_t at = line.find(" same_as=");
+    if (at != std::string::npos) same_as[name] = line.substr(at + 9, line.find(' ', at + 9) - at - 9);
+    names.push_back(name);
+  }
+  ASSERT_FALSE(names.empty());
+  std::string joined;
+  for (const std::string& v : names) joined += (joined.empty() ? "" : ",") + v;
+  const gllab::ProcessResult r = run_process({headless(lab), "--views", joined, "--out", "-"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  std::vector<gllab::Image> frames;
+  std::size_t at = 0;
+  for (const std::string& v : names) frames.push_back(gllab::decode_pam_at(r.out, at, lab + " " + v));
+  // The root of a view's same_as chain: two views are declared the same when their roots agree.
+  const auto root = [&](std::string v) {
+    for (int hops = 0; same_as.count(v) && hops < 16; ++hops) v = same_as[v];
+    return v;
+  };
+  for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t j = i + 1; j < names.size(); ++j) {
+      const bool same = frames[i].rgba == frames[j].rgba;
+      const bool declared = root(names[i]) == root(names[j]);
+      if (declared) EXPECT_TRUE(same) << lab << ": " << names[j] << " is declared the same as " << names[i];
+      else EXPECT_FALSE(same) << lab << ": views " << names[i] << " and " << names[j]
+                              << " are byte-identical (declare same_as if that is the lesson)";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Labs, EveryLabsViews, ::testing::ValuesIn(gllab::testing::lab_ids()));
 
 }  // namespace

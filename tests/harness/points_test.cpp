@@ -37,9 +37,8 @@ gllab::Lab curve_lab() {
   gllab::Lab lab;
   lab.id = "99_test_curve";
   lab.title = "test";
-  lab.views = {{"default", ""}, {"other", ""}};
+  lab.views = {{"default", "", [](const gllab::State&) {}}, {"other", "", [](const gllab::State&) {}}};
   lab.params = {{"degree", 2, 1, 3, ""}, {"weight", 1, 0.5, 4, ""}};
-  lab.display = [](const gllab::State&) {};
   lab.points = {{"P", {{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}}, "control points"},
                 {"H", {{0, 0, 1}}, "a 3D handle", 3}};
   lab.model = [](const gllab::State& s) -> gllab::Model {

@@ -7,8 +7,10 @@
 
 namespace {
 
+const auto kNoDraw = [](const gllab::State&) {};
+
 gllab::State sample_state() {
-  return gllab::State({{"default", ""}, {"wireframe", ""}, {"vertex_order", ""}},
+  return gllab::State({{"default", "", kNoDraw}, {"wireframe", "", kNoDraw}, {"vertex_order", "", kNoDraw}},
                       {{"spin", 0, -180, 180, ""}, {"lighting", 1, 0, 1, ""}});
 }
 
@@ -89,8 +91,7 @@ TEST(Options, HeadlessNeedsOutUnlessListingOrHelping) {
 TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {
   gllab::Lab lab;
   lab.id = "test";
-  lab.views = {{"default", ""}};
-  lab.display = [](const gllab::State&) {};
+  lab.views = {{"default", "", kNoDraw}};
   lab.keyboard = [](gllab::State&, unsigned char) { return false; };
   lab.keys = {{'h', "mine"}};
   EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
@@ -107,9 +108,8 @@ TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {
 TEST(ApplyKey, NamedParameterIsSteppedClampedOrToggled) {
   gllab::Lab lab;
   lab.id = "test";
-  lab.views = {{"default", ""}};
+  lab.views = {{"default", "", kNoDraw}};
   lab.params = {{"count", 4, 2, 6, ""}, {"labels", 1, 0, 1, ""}};
-  lab.display = [](const gllab::State&) {};
   int other = 0;
   lab.keyboard = [&](gllab::State&, unsigned char key) { return key == 'x' && ++other; };
   lab.keys = {{'+', "count +3", "count", +3}, {'n', "labels on/off", "labels"}, {'x', "other"}};
@@ -130,9 +130,8 @@ TEST(ApplyKey, NamedParameterIsSteppedClampedOrToggled) {
 TEST(ValidateLab, KeyWithUnknownParameterOrNoHandlerIsRejected) {
   gllab::Lab lab;
   lab.id = "test";
-  lab.views = {{"default", ""}};
+  lab.views = {{"default", "", kNoDraw}};
   lab.params = {{"count", 4, 2, 6, ""}};
-  lab.display = [](const gllab::State&) {};
   lab.keys = {{'+', "more", "cuont", +1}};
   EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
   lab.keys = {{'x', "does something"}};  // no parameter and no keyboard()
@@ -141,19 +140,75 @@ TEST(ValidateLab, KeyWithUnknownParameterOrNoHandlerIsRejected) {
   EXPECT_NO_THROW(gllab::validate_lab(lab));
 }
 
-// An error view (lab.h View::expect_error) is marked in --list-views and
+// An error view (lab.h kErrorView) is marked in --list-views and
 // --help, and may not be the first view: the window opens there.
 TEST(ValidateLab, ErrorViewIsListedAsSuchAndCannotComeFirst) {
   gllab::Lab lab;
   lab.id = "test";
   lab.title = "test";
-  lab.views = {{"default", "a picture"}, {"broken", "shows an error", true}};
-  lab.display = [](const gllab::State&) {};
+  lab.views = {{"default", "a picture", kNoDraw}, {"broken", "shows an error", kNoDraw, gllab::kErrorView}};
   ASSERT_NO_THROW(gllab::validate_lab(lab));
   EXPECT_EQ(gllab::list_views_text(lab), "default\nbroken expect_error\n");
   EXPECT_NE(gllab::views_text(lab).find("shows an error (error view: headless exits 1)"), std::string::npos);
   std::swap(lab.views[0], lab.views[1]);
   EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+}
+
+// Views are declared with the function that draws them: a view without one,
+// a misspelt same_as and a name that is not lower_snake_case are refused when
+// the lab starts, naming the view.
+TEST(ValidateLab, EveryViewNeedsItsDrawFunction) {
+  gllab::Lab lab;
+  lab.id = "test";
+  lab.views = {{"default", "", kNoDraw}, {"outline", "", nullptr}};
+  try {
+    gllab::validate_lab(lab);
+    FAIL() << "a view without a draw function passed";
+  } catch (const std::logic_error& e) {
+    EXPECT_STREQ(e.what(), "lab test: view 'outline' has no draw function");
+  }
+  lab.views[1].draw = kNoDraw;
+  EXPECT_NO_THROW(gllab::validate_lab(lab));
+  lab.views[1].same_as = "defualt";
+  try {
+    gllab::validate_lab(lab);
+    FAIL() << "same_as naming no view passed";
+  } catch (const std::logic_error& e) {
+    EXPECT_STREQ(e.what(), "lab test: view 'outline' is the same as 'defualt', which is not another view");
+  }
+  lab.views[1].same_as = "outline";  // itself
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+  lab.views[1].same_as = "default";
+  EXPECT_NO_THROW(gllab::validate_lab(lab));
+  EXPECT_EQ(gllab::list_views_text(lab), "default\noutline same_as=default\n");
+  lab.views[1].name = "Outline";
+  EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+}
+
+// The orbit camera: --camera yaw,pitch,zoom sets it, and the arguments that
+// reproduce a state carry it only when it is not the default (so the printed
+// command of an untouched view is what it was before there was a camera).
+TEST(Camera, TextIsParsedCheckedAndPrintedBack) {
+  gllab::State s = sample_state();
+  EXPECT_EQ(s.as_arguments(), "--view default");
+  s.set_camera_from_text("20,-7.5,1.25");
+  EXPECT_EQ(s.camera.yaw, 20);
+  EXPECT_EQ(s.camera.pitch, -7.5);
+  EXPECT_EQ(s.camera.zoom, 1.25);
+  EXPECT_EQ(s.as_arguments(), "--view default --camera 20,-7.5,1.25");
+  const auto message = [&](const std::string& text) {
+    try {
+      s.set_camera_from_text(text);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message("20,10"), "malformed --camera '20,10': 2 numbers (expected yaw,pitch,zoom, e.g. 30,-15,1.5)");
+  EXPECT_EQ(message("20,x,1"), "malformed --camera '20,x,1': 'x' is not a number (expected yaw,pitch,zoom, e.g. 30,-15,1.5)");
+  EXPECT_EQ(message("0,0,50"), "--camera '0,0,50': zoom 50 is out of range [0.1, 20]");
+  EXPECT_EQ(message("nan,0,1"), "malformed --camera 'nan,0,1': 'nan' is not a number (expected yaw,pitch,zoom, e.g. 30,-15,1.5)");
+  EXPECT_EQ(s.as_arguments(), "--view default --camera 20,-7.5,1.25");  // a refused text changes nothing
 }
 
 // --print-text is the headless runner's: the window has no stdout to read.

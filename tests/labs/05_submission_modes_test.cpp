@@ -2,9 +2,10 @@
 // sent through immediate mode, a display list, vertex arrays and a VBO gives
 // the same pixels. Origin of the expectation: the four paths hand GL the same
 // triangles with the same per-vertex colour, normal and position, in the same
-// order (GL_TRIANGLES), so a deterministic rasteriser (llvmpipe, DESIGN.md:
-// byte-identical across processes) must produce identical images; any
-// difference at all (threshold 0) means a path sent something else.
+// order (GL_TRIANGLES), so a deterministic rasteriser (llvmpipe gives the same
+// bytes in every process: the reference images rely on it) must produce
+// identical images; any difference at all (threshold 0) means a path sent
+// something else. The paths are written in the lab (namespace lab05).
 #include <gtest/gtest.h>
 
 #include <string>

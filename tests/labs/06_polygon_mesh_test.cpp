@@ -3,6 +3,7 @@
 // feature_edges panels, so without feature edges the panels are the same.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,25 @@ TEST(PolygonMeshLab, FeatureEdgesChangeTheShading) {
   ScratchDir dir("lab06");
   EXPECT_GT(halves_differing(render(dir, "feature_edges", {"labels=0"})), kAtLeast);
   EXPECT_GT(halves_differing(render(dir, "feature_edges", {"labels=0", "edges=0"})), kAtLeast);
+}
+
+// data_structure's panel counts the cube from the mesh (common/gl/mesh_view.h,
+// data_structure_counts): 8 corners, the cube's 12 edges plus the lid's
+// diagonal, its 6 faces with the lid split in two; Euler's V - E + F = 2 for a
+// closed surface without holes. Each corner meets 3 faces across feature edges
+// (90 degrees > 30): 3 render vertices per corner, 24 in all; the diagonal is
+// virtual, so the lid's two triangles are one smoothing group.
+TEST(PolygonMeshLab, DataStructurePanelCountsTheCube) {
+  ScratchDir dir("lab06");
+  const std::vector<std::string> text = gllab::testing::view_text(kLab, dir, "data_structure");
+  const auto has = [&](const std::string& line) {
+    return std::find(text.begin(), text.end(), line) != text.end();
+  };
+  EXPECT_TRUE(has("2 surfaces: box 5 polygons, lid 2"));
+  EXPECT_TRUE(has("V 8  E 13  F 7  V-E+F = 2"));
+  EXPECT_TRUE(has("12 feature edges (orange), 1 virtual (blue, dashed)"));
+  EXPECT_TRUE(has("edge 4-7 is used by polygons 1 and 2"));
+  EXPECT_TRUE(has("24 vertices sent to GL: one per corner and smoothing group"));
 }
 
 // The lab rejects parameters outside their range with one line and exit 2.

@@ -87,6 +87,59 @@ TEST(Interleaved, PacksPositionNormalColourPerVertex) {
   EXPECT_EQ(v[9 * 5 + 8], m.colours[17]);
 }
 
+// Without a ripple (amplitude 0) the rippled torus is make_torus's, vertex for
+// vertex, in the same order: the same formulas (P = c + r n, normal n), so the
+// floats agree to rounding.
+TEST(RippledTorus, WithoutRippleIsTheTorus) {
+  const gllab::IndexedMesh m = gllab::make_torus(12, 8, 1.0, 0.4);
+  const std::vector<float> v = gllab::rippled_torus(12, 8, 1.0, 0.4, 3, 0.0, 0.7);
+  ASSERT_EQ(v.size(), 6 * m.vertex_count());
+  for (std::size_t i = 0; i < m.vertex_count(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(v[6 * i + k], m.positions[3 * i + k], kFloatTolerance) << i;
+      EXPECT_NEAR(v[6 * i + 3 + k], m.normals[3 * i + k], kFloatTolerance) << i;
+    }
+}
+
+// Property: with a ripple, every point is rho(u) = r + A sin(m u - phase) from
+// the tube centre (R cos u, R sin u, 0), and the normal has unit length. It
+// differs from the plain normal where rho' != 0: at u = 0 with phase 0,
+// rho' = A m, so the normal tilts along the ring (y < 0 at the outer equator).
+TEST(RippledTorus, PointsLieOnTheRippledTubeWithUnitNormals) {
+  const int rings = 16, sides = 6, waves = 2;
+  const double R = 1.0, r = 0.4, A = 0.1;
+  const std::vector<float> v = gllab::rippled_torus(rings, sides, R, r, waves, A, 0.0);
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sides; ++j) {
+      const float* p = &v[6 * std::size_t(i * sides + j)];
+      const double u = 2 * M_PI * i / rings, rho = r + A * std::sin(waves * u);
+      EXPECT_NEAR(std::hypot(p[0] - R * std::cos(u), p[1] - R * std::sin(u), p[2]), rho,
+                  kFloatTolerance);
+      EXPECT_NEAR(std::hypot(p[3], p[4], p[5]), 1.0, kFloatTolerance);
+    }
+  EXPECT_LT(v[4], -0.05f) << "vertex (0, 0): the normal leans back along the ring";
+}
+
+// 4 corners per square, counter-clockwise from +z, two greys alternating.
+TEST(CheckerFloor, QuadsCoverTheSquareCounterClockwise) {
+  const gllab::ColouredQuads f = gllab::checker_floor(4, 2.f, -0.5f);
+  ASSERT_EQ(f.positions.size(), 4u * 4u * 4u * 3u);
+  ASSERT_EQ(f.colours.size(), f.positions.size());
+  double area = 0;
+  for (std::size_t q = 0; q < 16; ++q) {
+    const float* c = &f.positions[12 * q];
+    for (int k = 0; k < 4; ++k) {
+      const float* a = c + 3 * k;
+      const float* b = c + 3 * ((k + 1) % 4);
+      area += 0.5 * (a[0] * b[1] - b[0] * a[1]);  // shoelace: > 0 when counter-clockwise
+      EXPECT_EQ(a[2], -0.5f);
+    }
+  }
+  EXPECT_NEAR(area, 4.0 * 4.0, 1e-5);  // [-2, 2]^2, every square counted positive
+  EXPECT_NE(f.colours[0], f.colours[12]) << "neighbours differ";
+  EXPECT_EQ(f.colours[0], f.colours[12 * 5]) << "diagonal neighbours agree";
+}
+
 TEST(MakeTorus, BadSizesAreNamed) {
   EXPECT_THROW(gllab::make_torus(2, 8, 1, 0.4), std::invalid_argument);
   EXPECT_THROW(gllab::make_torus(8, 8, 0.3, 0.4), std::invalid_argument);

@@ -1,4 +1,5 @@
-// tests/mesh/polygon_mesh_test.cpp — the polygon mesh of seed §1.2 (lab 06).
+// tests/mesh/polygon_mesh_test.cpp — the polygon mesh of the lecture notes,
+// ch. 1, §1.2 Polygonal representation (lab 06).
 #include "mesh/polygon_mesh.h"
 
 #include <gtest/gtest.h>
@@ -50,8 +51,9 @@ std::string error_of(const std::vector<Vec3>& positions, const std::vector<gllab
   return "no error";
 }
 
-// Seed §1.2: vertices are stored only once. A cube has 8 vertices, 12 edges and
-// 6 faces, and a closed genus-0 surface has V - E + F = 2 (Euler).
+// §1.2, "Hierarchy of the representation": vertices are stored only once. A
+// cube has 8 vertices, 12 edges and 6 faces, and a closed genus-0 surface has
+// V - E + F = 2 (Euler).
 TEST(BuildPolygonMesh, CubeStoresEachVertexAndEdgeOnce) {
   const PolygonMesh m = cube();
   EXPECT_EQ(m.vertices.size(), 8u);
@@ -177,9 +179,10 @@ TEST(ClassifyEdges, FineSphereHasNoFeatureEdges) {
   EXPECT_GT(gllab::classify_edges(m, 5.5), 0u);
 }
 
-// Seed §1.2: a sharp edge is enforced by storing it (its vertices) several
-// times. A cube shaded flat with sharp edges needs 4 vertices per face = 24;
-// averaged across all edges it needs 8; face normals need 24 as well.
+// §1.2, "Comment on edges": a sharp edge is enforced by storing it (its
+// vertices) several times. A cube shaded flat with sharp edges needs 4 vertices
+// per face = 24; averaged across all edges it needs 8; face normals need 24 as
+// well.
 TEST(RenderArrays, SharpCubeDuplicatesVerticesAlongFeatureEdges) {
   PolygonMesh m = cube();
   gllab::classify_edges(m, 30);

@@ -322,3 +322,40 @@ TEST(TrimLoop, CurveAndPolylinePiecesJoin) {
 
 }  // namespace
 }  // namespace gllab::spline
+
+namespace gllab::spline {
+namespace {
+
+// The same failures as data (trim.h TrimLoopError), so a program can show the
+// loop and the rule without parsing the message: lab 22's error view does.
+TrimLoopError error_of(const std::vector<TrimLoop>& loops) {
+  try {
+    validate_trim_loops(loops, kUnit);
+  } catch (const TrimLoopError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "accepted";
+  return TrimLoopError(TrimLoopError::Kind::kBadPiece, 99, "", "");
+}
+
+TEST(TrimLoopError, CarriesTheLoopTheKindAndTheRule) {
+  const TrimLoopError outer = error_of({square_loop(0.25, 0.75, false)});
+  EXPECT_EQ(outer.kind, TrimLoopError::Kind::kOuterClockwise);
+  EXPECT_EQ(outer.loop, 0u);
+  EXPECT_EQ(outer.summary, "(outer) runs clockwise");
+  EXPECT_EQ(outer.rule, "outer loops must run counter-clockwise");
+  const TrimLoopError hole = error_of({square_loop(0.125, 0.875), square_loop(0.375, 0.625, true)});
+  EXPECT_EQ(hole.kind, TrimLoopError::Kind::kHoleCounterClockwise);
+  EXPECT_EQ(hole.loop, 1u);
+  EXPECT_EQ(hole.rule, "holes must run clockwise");
+  TrimLoop open;
+  open.pieces.push_back({{{0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}}, std::nullopt});
+  const TrimLoopError gap = error_of({square_loop(0.0625, 0.9375), open});
+  EXPECT_EQ(gap.kind, TrimLoopError::Kind::kNotClosed);
+  EXPECT_EQ(gap.loop, 1u);
+  // It is still the std::invalid_argument every caller catches, with the documented message.
+  EXPECT_EQ(std::string(gap.what()).rfind("trim loop 1: not closed:", 0), 0u) << gap.what();
+}
+
+}  // namespace
+}  // namespace gllab::spline
