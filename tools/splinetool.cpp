@@ -372,7 +372,7 @@ std::vector<T> times_linear(const std::vector<T>& p, double r) {
 }
 
 /// Lagrange form -> monomial form: sum_i f_i L_i(s), each L_i(s) =
-/// prod_{k != i} (s - s_k) / (s_i - s_k) multiplied out (seed 000 §1.6, Theorem 2).
+/// prod_{k != i} (s - s_k) / (s_i - s_k) multiplied out (ch. 1 §1.6, Theorem 2).
 std::vector<Vec3> monomial_from_lagrange(const std::vector<double>& s, const std::vector<Vec3>& f) {
   std::vector<Vec3> c(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -390,7 +390,7 @@ std::vector<Vec3> monomial_from_lagrange(const std::vector<double>& s, const std
 }
 
 /// Newton form -> monomial form by the nested (Horner) scheme:
-/// p = a_n; p = p (s - s_k) + a_k for k = n-1 .. 0 (seed 000 §1.6, Newton interpolation).
+/// p = a_n; p = p (s - s_k) + a_k for k = n-1 .. 0 (ch. 1 §1.6, Newton interpolation).
 std::vector<Vec3> monomial_from_newton(const std::vector<double>& s, const std::vector<Vec3>& a) {
   std::vector<Vec3> p = {a.back()};
   for (std::size_t k = a.size() - 1; k-- > 0;) {
@@ -570,7 +570,7 @@ const std::vector<Command>& commands() {
        "           periodic   closed C2 cubic spline (give the first point once) -> [t0, t(n+1)]\n"
        "           lagrange   the interpolating polynomial, from the Lagrange form -> bezier_curve\n"
        "           newton     the same polynomial, from the Newton form            -> bezier_curve\n"
-       "           bezier     the same polynomial as the seed's Bézier system      -> bezier_curve\n"
+       "           bezier     the same polynomial as the lecture's Bézier system    -> bezier_curve\n"
        "  --param uniform|chordal|centripetal|foley|nielson   the parameters t_i (default chordal)\n",
        {"method", "param"}, interpolate},
       {"tessellate", "a curve as a polyline, a surface as a triangle mesh",

@@ -228,7 +228,7 @@ void draw_curve(const std::function<spline::Vec3(double)>& curve, double a, doub
 
 void draw_curve(const spline::BsplineCurve& curve, Rgb colour, float width, double tolerance) {
   // Pieces between the interior knots of multiplicity p + 1, where the curve
-  // jumps (seed 003, case D); each piece ends with its left limit.
+  // jumps (notes "B-Spline Polynomials", case D); each piece ends with its left limit.
   const spline::ParamInterval dom = spline::domain(curve);
   std::vector<double> breaks = {dom.a};
   for (int i = curve.p + 1; i <= curve.n(); ++i)

@@ -118,7 +118,7 @@ void draw_sampled_curve(const std::function<spline::Vec3(double)>& curve, double
 /// knot's multiplicity beside it when it is more than 1.
 void draw_knot_markers(const spline::BsplineCurve& curve, Rgb colour, bool show_multiplicity = true);
 
-/// de Casteljau's scheme (seed 000 §1.6): level j's polygon b_0^j .. b_{n-j}^j,
+/// de Casteljau's scheme (ch. 1 §1.6): level j's polygon b_0^j .. b_{n-j}^j,
 /// colours blended from `first` (the control polygon) to `last`, and X(t) as
 /// a large dot.
 void draw_de_casteljau(const spline::DeCasteljau& scheme, Rgb first, Rgb last);

@@ -1,4 +1,4 @@
-// common/spline/bezier.cpp — Bézier curves (seed 000 §1.6). See bezier.h for
+// common/spline/bezier.cpp — Bézier curves (ch. 1 §1.6). See bezier.h for
 // what each function returns and where its formula comes from.
 #include "spline/bezier.h"
 
@@ -58,7 +58,7 @@ double checked_parameter(double t, double a, double b, const std::string& what) 
   return std::clamp(t, a, b);
 }
 
-/// The local parameter s = (t - a) / (b - a) in [0, 1] (seed 000 §1.6, "Generalization").
+/// The local parameter s = (t - a) / (b - a) in [0, 1] (ch. 1 §1.6, "Generalization").
 double local_parameter(double t, double a, double b) { return (t - a) / (b - a); }
 
 void require_order(int k, const std::string& what, const char* name) {
@@ -66,7 +66,7 @@ void require_order(int k, const std::string& what, const char* name) {
 }
 
 /// Forward differences Delta^k of the points, applied in place k times:
-/// afterwards pts[i] = Delta^k b_i, i = 0..size-1-k (seed 000 §1.6).
+/// afterwards pts[i] = Delta^k b_i, i = 0..size-1-k (ch. 1 §1.6).
 void forward_differences(std::vector<Vec3>& pts, int k) {
   for (int r = 0; r < k; ++r) {
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) pts[i] = pts[i + 1] - pts[i];
@@ -169,7 +169,7 @@ std::vector<std::vector<double>> bezier_matrix(int n) {
   if (n < 0) fail("bezier_matrix: degree n=" + std::to_string(n) + " is negative");
   const std::size_t size = static_cast<std::size_t>(n) + 1;
   std::vector<std::vector<double>> M(size, std::vector<double>(size, 0.0));
-  for (int j = 0; j <= n; ++j) {  // power s^j sits in row n - j (seeds' layout)
+  for (int j = 0; j <= n; ++j) {  // power s^j sits in row n - j (the lecture's layout)
     for (int i = 0; i <= j; ++i) {
       const double sign = (j - i) % 2 == 0 ? 1.0 : -1.0;
       M[static_cast<std::size_t>(n - j)][static_cast<std::size_t>(i)] = sign * binomial(n, j) * binomial(j, i);
@@ -183,7 +183,7 @@ std::vector<Vec3> monomial_coefficients(const BezierCurve& curve) {
   const int n = bezier_degree(curve);
   const std::size_t size = curve.P.size();
   // 1. Power form in s: c_j(s) = sum_{i <= j} (-1)^(j-i) C(n, j) C(j, i) b_i
-  //    (the seeds' matrix M, read bottom row first).
+  //    (the lecture's matrix M, read bottom row first).
   const std::vector<std::vector<double>> M = bezier_matrix(n);
   std::vector<Vec3> cs(size);
   for (std::size_t j = 0; j < size; ++j)
@@ -285,7 +285,7 @@ BezierCurve degree_elevate(const BezierCurve& curve, int times) {
   const auto& b = curve.P;
   std::vector<Vec3> e(curve.P.size() + static_cast<std::size_t>(times));
   if (times == 1) {
-    // seed 000 §1.6 property 9: b'_i = i/(n+1) b_{i-1} + (1 - i/(n+1)) b_i.
+    // ch. 1 §1.6 property 9: b'_i = i/(n+1) b_{i-1} + (1 - i/(n+1)) b_i.
     e.front() = b.front();
     e.back() = b.back();
     for (int i = 1; i <= n; ++i) {
@@ -314,7 +314,7 @@ BezierCurve bezier_derivative(const BezierCurve& curve, int k) {
   const int n = bezier_degree(curve);
   if (k == 0) return curve;
   if (k > n) return with_points(curve, {Vec3{}}, curve.a, curve.b);  // differentiated away
-  // seed 000 §1.6 "Derivatives": n!/(n-k)! Delta^k b_i, scaled by 1/(b-a)^k.
+  // ch. 1 §1.6 "Derivatives": n!/(n-k)! Delta^k b_i, scaled by 1/(b-a)^k.
   std::vector<Vec3> d = curve.P;
   forward_differences(d, k);
   const double factor = falling_factorial(n, k) / std::pow(curve.b - curve.a, k);
@@ -352,7 +352,7 @@ Vec3 bezier_start_derivative(const BezierCurve& curve, int k) {
   require_order(k, what, "k");
   const int n = bezier_degree(curve);
   if (k > n) return {};
-  // X^(k)(a) = n!/(n-k)! / h^k sum_j (-1)^(k-j) C(k, j) b_j   (seed 000 §1.6)
+  // X^(k)(a) = n!/(n-k)! / h^k sum_j (-1)^(k-j) C(k, j) b_j   (ch. 1 §1.6)
   Vec3 sum;
   for (int j = 0; j <= k; ++j)
     sum += ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial(k, j) * curve.P[static_cast<std::size_t>(j)];
@@ -365,7 +365,7 @@ Vec3 bezier_end_derivative(const BezierCurve& curve, int k) {
   require_order(k, what, "k");
   const int n = bezier_degree(curve);
   if (k > n) return {};
-  // X^(k)(b) = n!/(n-k)! / h^k sum_j (-1)^j C(k, j) b_{n-j}   (seed 000 §1.6)
+  // X^(k)(b) = n!/(n-k)! / h^k sum_j (-1)^j C(k, j) b_{n-j}   (ch. 1 §1.6)
   Vec3 sum;
   for (int j = 0; j <= k; ++j)
     sum += (j % 2 == 0 ? 1.0 : -1.0) * binomial(k, j) * curve.P[static_cast<std::size_t>(n - j)];
@@ -399,7 +399,7 @@ BezierContinuation continuation_points(const BezierCurve& a, int k, double next_
 
 Vec3 bezier_integral(const BezierCurve& curve) {
   validate_as(curve, "bezier_integral");
-  // int_a^b X = (b - a) / (n + 1) (b_0 + ... + b_n)   (seed 000 §1.6)
+  // int_a^b X = (b - a) / (n + 1) (b_0 + ... + b_n)   (ch. 1 §1.6)
   Vec3 sum;
   for (const Vec3& p : curve.P) sum += p;
   return (curve.b - curve.a) / static_cast<double>(curve.P.size()) * sum;
@@ -437,7 +437,7 @@ BezierCurve bezier_interpolate(const std::vector<Vec3>& Q, const std::vector<dou
              " coincide (parameters must be pairwise distinct)");
     s[j] = local_parameter(t[j], a, b);
   }
-  // seed 000 §1.6: row j of the system is sum_i b_i B_i^r(s_j) = Q_j.
+  // ch. 1 §1.6: row j of the system is sum_i b_i B_i^r(s_j) = Q_j.
   const int r = static_cast<int>(Q.size()) - 1;
   std::vector<std::vector<double>> A;
   A.reserve(Q.size());

@@ -240,7 +240,7 @@ Ctl<Pt> knot_refine_impl(const Ctl<Pt>& c, const std::vector<double>& X) {
 }
 
 /// The knots to insert so every knot in the domain [U[p], U[n+1]] reaches
-/// multiplicity p (seed 000 §1.6: "inserting knots so that every knot has
+/// multiplicity p (ch. 1 §1.6: "inserting knots so that every knot has
 /// multiplicity m-1" turns the control polygon into the Bézier points).
 std::vector<double> knots_to_bezier(const BsplineCurve& c) {
   const ParamInterval dom = domain(c);
@@ -662,7 +662,7 @@ double one_basis_fun(int i, double u, int p, const std::vector<double>& U) {
 namespace {
 double cox_de_boor_rec(int i, int k, double u, const std::vector<double>& U, int s) {
   if (k == 0) return i == s ? 1.0 : 0.0;
-  // 0/0 := 0 (seed 004): a zero-length support contributes nothing.
+  // 0/0 := 0 (notes "Higher Order Surfaces"): a zero-length support contributes nothing.
   const double d1 = U[i + k] - U[i];
   const double d2 = U[i + k + 1] - U[i + 1];
   const double a = d1 == 0.0 ? 0.0 : (u - U[i]) / d1 * cox_de_boor_rec(i, k - 1, u, U, s);
@@ -686,7 +686,7 @@ std::vector<double> all_basis_funs(double u, int p, const std::vector<double>& U
   if (p < 0 || m - p - 1 < 0)
     fail("all_basis_funs: degree p=" + std::to_string(p) + " does not fit " + std::to_string(U.size()) + " knots");
   require_finite(u, "all_basis_funs", "u");
-  // The Cox–de Boor table, one degree at a time (seed 000 §1.6).
+  // The Cox–de Boor table, one degree at a time (ch. 1 §1.6).
   std::vector<double> N(m, 0.0);
   const int s = active_interval(u, p, U);
   if (s >= 0) N[s] = 1.0;
@@ -787,7 +787,7 @@ DeBoorConstruction de_boor(const BsplineCurve& curve, double u) {
   DeBoorConstruction out;
   out.span = find_span(curve.n(), p, u, U);
   const int k = out.span;
-  // de Boor's algorithm is knot insertion repeated p times (seed 000 §1.6
+  // de Boor's algorithm is knot insertion repeated p times (ch. 1 §1.6
   // knot insertion; The NURBS Book §5.2): d_j^r = (1 - a) d_{j-1}^{r-1} + a d_j^{r-1},
   // a = (u - U[j]) / (U[j+p+1-r] - U[j]), j = k-p+r..k.
   std::vector<Vec4> level(p + 1);
@@ -1134,7 +1134,7 @@ KnotInsertStep knot_insert_step(const BsplineCurve& curve, double t) {
     // New knots: U[0..k], t, U[k+1..m].
     q.U = c.U;
     q.U.insert(q.U.begin() + step.k + 1, t);
-    // New points: P[0..k-p], q_{k-p+1..k}, P[k..n] (seed 000 §1.6).
+    // New points: P[0..k-p], q_{k-p+1..k}, P[k..n] (ch. 1 §1.6).
     q.P.reserve(n + 2);
     for (int i = 0; i <= step.k - p; ++i) q.P.push_back(c.P[i]);
     for (int i = step.first; i <= step.k; ++i) {
@@ -1180,7 +1180,7 @@ BsplineCurve knot_refine(const BsplineCurve& curve, const std::vector<double>& X
 
 std::vector<BsplineCurve> bezier_segments(const BsplineCurve& curve) {
   validate(curve);
-  // Seed 000 §1.6 (raise every knot to multiplicity p, here with A5.4 in one
+  // Ch. 1 §1.6 (raise every knot to multiplicity p, here with A5.4 in one
   // pass); then span k with U[k] < U[k+1] has the Bézier points P[k-p..k].
   // Inserting up to p (not p + 1) keeps unclamped ends working too.
   const std::vector<double> X = knots_to_bezier(curve);

@@ -8,9 +8,9 @@
 // w weights (empty: polynomial). The domain of a curve is [U[p], U[n+1]].
 //
 // Sources: The NURBS Book (Piegl & Tiller, 2nd ed.) by algorithm number, and
-// the lecture seeds (../shared/seeds/): seed 000 §1.6 (B-splines, Cox–de Boor,
-// knot insertion, NURBS), seed 003 (uniform cubic B-splines, cases A–D),
-// seed 004 (blending functions, matrix form, knot vectors).
+// the lecture notes (docs/lecture_notes.md): ch. 1 §1.6 (B-splines, Cox–de Boor,
+// knot insertion, NURBS), notes "B-Spline Polynomials" (uniform cubic B-splines, cases A–D),
+// notes "Higher Order Surfaces" (blending functions, matrix form, knot vectors).
 //
 // Every function that takes a BsplineCurve checks it (validate) and throws
 // std::invalid_argument with a message that names the values. The low-level
@@ -49,7 +49,7 @@ struct ParamInterval {
   double a = 0, b = 1;
 };
 
-/// [U[p], U[n+1]], the parameters where the curve is defined (seed 000 §1.6:
+/// [U[p], U[n+1]], the parameters where the curve is defined (ch. 1 §1.6:
 /// X(u) for u_{m-1} <= u <= u_{n+1} with order m = p + 1).
 ParamInterval domain(const BsplineCurve& curve);
 /// The same for raw (p, U): [U[p], U[U.size() - p - 1]]. Checks nothing.
@@ -63,18 +63,18 @@ int knot_multiplicity(const std::vector<double>& U, double u);
 
 // ---- knot vectors -----------------------------------------------------------
 
-/// Clamped ("nonperiodic", seed 004) uniform knots for P[0..n] of degree p:
+/// Clamped ("nonperiodic", notes "Higher Order Surfaces") uniform knots for P[0..n] of degree p:
 /// p + 1 zeros, the interior knots j / (n - p + 1), j = 1..n-p, p + 1 ones.
 /// Domain [0, 1]; the curve interpolates P[0] and P[n]. Needs 1 <= p <= n.
 std::vector<double> clamped_uniform_knots(int n, int p);
 
-/// Unclamped uniform knots 0, 1, 2, ..., n + p + 1 (seed 004 "knots = 0, 1, 2,
+/// Unclamped uniform knots 0, 1, 2, ..., n + p + 1 (notes "Higher Order Surfaces", "knots = 0, 1, 2,
 /// ..., n"). Domain [p, n + 1]; segment i (0-based) is u in [p + i, p + i + 1].
 /// Needs 1 <= p <= n.
 std::vector<double> uniform_knots(int n, int p);
 
 /// A closed C^{p-1} curve: the points followed by their first p points again
-/// (seed 003 "closed cubic B-splines: make the last 3 control points coincide
+/// (notes "B-Spline Polynomials", "closed cubic B-splines: make the last 3 control points coincide
 /// with the first 3"), on uniform_knots. Domain [p, p + points.size()]; the
 /// curve ends where it starts, with equal derivatives up to order p - 1.
 /// Needs points.size() >= 2 and p >= 1.
@@ -110,8 +110,8 @@ std::vector<std::vector<double>> ders_basis_funs(int i, double u, int p, int d, 
 /// At u == U[m] the last function is 1 (the book's special case).
 double one_basis_fun(int i, double u, int p, const std::vector<double>& U);
 
-/// The Cox–de Boor recursion exactly as the seeds write it (seed 000 §1.6,
-/// seed 004), with 0/0 := 0 and half-open N_{i,0} = 1 on [U[i], U[i+1]), plus
+/// The Cox–de Boor recursion exactly as the lecture write it (ch. 1 §1.6,
+/// notes "Higher Order Surfaces"), with 0/0 := 0 and half-open N_{i,0} = 1 on [U[i], U[i+1]), plus
 /// the right end: at u == U[m] the last non-empty interval counts as closed.
 /// Exponential time; for teaching and plotting. Equals one_basis_fun.
 double cox_de_boor(int i, double u, int p, const std::vector<double>& U);
@@ -128,7 +128,7 @@ inline constexpr int kMaxDegree = 31;
 
 /// Which one-sided limit to take at a knot: Right uses U[i] <= u < U[i+1]
 /// (find_span), Left uses U[i] < u <= U[i+1] (find_span_left). They differ only
-/// at an interior knot where the curve is not C^d (seed 003 cases B–D).
+/// at an interior knot where the curve is not C^d (notes "B-Spline Polynomials" cases B–D).
 enum class Side { Right, Left };
 
 /// C(u). A3.1 CurvePoint (p. 82) for a polynomial curve, A4.1 (p. 124) for a
@@ -191,7 +191,7 @@ std::vector<double> greville_abscissae(int p, const std::vector<double>& U);
 
 // ---- knot insertion, refinement, decomposition -------------------------------
 
-/// One insertion of the knot t by the seeds' formula (seed 000 §1.6, Boehm):
+/// One insertion of the knot t by the lecture's formula (ch. 1 §1.6, Boehm):
 /// t in [U[k], U[k+1]), q_i = (1 - a_i) P[i-1] + a_i P[i] with
 /// a_i = (t - U[i]) / (U[i+p] - U[i]) for k - p + 1 <= i <= k.
 /// a[j] is a_{first + j}, first = k - p + 1 (so a.size() == p). k is
@@ -215,7 +215,7 @@ BsplineCurve knot_refine(const BsplineCurve& curve, const std::vector<double>& X
 
 /// The Bézier pieces of a polynomial curve, one per non-empty knot span of the
 /// domain, each with its parameter interval [a, b]. Made by raising every knot
-/// of the domain to multiplicity p with one knot refinement (A5.4), as seed 000
+/// of the domain to multiplicity p with one knot refinement (A5.4), as ch. 1
 /// §1.6 "Displaying B-spline curves" describes; the result is that of A5.6
 /// DecomposeCurve, and it works for unclamped curves too. Throws for a rational
 /// curve (BezierCurve has no weights; use bezier_segments).
@@ -229,7 +229,7 @@ std::vector<BsplineCurve> bezier_segments(const BsplineCurve& curve);
 /// each starting where the previous one ends (same point, same parameter),
 /// as one B-spline curve. The knots are a x (p+1), every joint x p, b x (p+1),
 /// and the control points are the segments' points with each joint once
-/// (seed 000 §1.6, "B-splines": a B-spline whose knots all have multiplicity
+/// (ch. 1 §1.6, "B-splines": a B-spline whose knots all have multiplicity
 /// m - 1, m the order, has the Bézier points as its control points). The
 /// curve is only C0 at the joints, unless the points make it smoother.
 /// Throws for no segments, a degree < 1 or different degrees, a gap between
@@ -252,11 +252,11 @@ BsplineCurve degree_elevate(const BsplineCurve& curve, int t = 1);
 /// The same curve run backwards: C_rev(a + b - u) == C(u) on [a, b].
 BsplineCurve reversed(const BsplineCurve& curve);
 
-// ---- uniform cubic B-spline, matrix form (seeds 003, 004) --------------------
+// ---- uniform cubic B-spline, matrix form (notes "B-Spline Polynomials", "Higher Order Surfaces") ---
 
 /// M = 1/6 [[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 0, 3, 0], [1, 4, 1, 0]] so that
 /// Q_i(t) = [t^3 t^2 t 1] M [P_i P_{i+1} P_{i+2} P_{i+3}]^T, t in [0, 1]
-/// (seed 004 "Matrix form"; seed 003 writes the last row "-1 4 1 0", a typo:
+/// (notes "Higher Order Surfaces", "Matrix form"; notes "B-Spline Polynomials" writes the last row "-1 4 1 0", a typo:
 /// its own d = (P_{i-3} + 4 P_{i-2} + P_{i-1}) / 6 gives 1 4 1 0).
 inline constexpr double kUniformCubicMatrix[4][4] = {
     {-1.0 / 6, 3.0 / 6, -3.0 / 6, 1.0 / 6},
@@ -265,12 +265,12 @@ inline constexpr double kUniformCubicMatrix[4][4] = {
     {1.0 / 6, 4.0 / 6, 1.0 / 6, 0.0},
 };
 
-/// The four blending functions of one segment (seed 004): B0 = (1-t)^3 / 6,
+/// The four blending functions of one segment (notes "Higher Order Surfaces"): B0 = (1-t)^3 / 6,
 /// B1 = (3t^3 - 6t^2 + 4) / 6, B2 = (-3t^3 + 3t^2 + 3t + 1) / 6, B3 = t^3 / 6.
 std::array<double, 4> uniform_cubic_basis(double t);
 
 /// Polynomial coefficients (a, b, c, d) of Q(t) = a t^3 + b t^2 + c t + d from
-/// four control points: M times (P0, P1, P2, P3) (seed 003 "Solution").
+/// four control points: M times (P0, P1, P2, P3) (notes "B-Spline Polynomials", "Solution").
 std::array<Vec3, 4> uniform_cubic_coefficients(Vec3 P0, Vec3 P1, Vec3 P2, Vec3 P3);
 
 /// Segment i (uses P[i..i+3]) at local t in [0, 1], by the matrix form. Equals

@@ -1,5 +1,5 @@
 // common/spline/cubic_spline.cpp — natural, clamped and periodic cubic
-// splines (seed 000 §1.6), their Bézier and B-spline forms, and the seed's
+// splines (ch. 1 §1.6), their Bézier and B-spline forms, and the lecture's
 // interpolating Bézier spline through de Boor points.
 //
 // Functions y = S(t) and curves X(t) share one template: only the type of a
@@ -64,7 +64,7 @@ int dimension_of(const std::vector<Vec3>& P) {
 }
 
 /// The interval lengths D_i = t_{i+1} - t_i with the index conventions of
-/// seed 000 §1.6: an open spline has D_{-1} = D_N = 0 (no interval beyond the
+/// ch. 1 §1.6: an open spline has D_{-1} = D_N = 0 (no interval beyond the
 /// ends); a closed one repeats its N intervals cyclically.
 struct Intervals {
   const std::vector<double>& t;
@@ -81,7 +81,7 @@ struct Intervals {
 
 // --- the power form --------------------------------------------------------------
 
-/// The seed's remaining coefficients once the c_i are known (seed 000 §1.6,
+/// The lecture's remaining coefficients once the c_i are known (ch. 1 §1.6,
 /// "Algorithm for a natural cubic spline (continued)"), for i = 0..N-1:
 ///     d_i = (c_{i+1} - c_i) / (3 D_i)
 ///     b_i = (a_{i+1} - a_i) / D_i - D_i (c_{i+1} + 2 c_i) / 3
@@ -106,14 +106,14 @@ PiecewiseCubic<T> power_form(const std::vector<double>& t, const std::vector<T>&
   return s;
 }
 
-/// The right-hand side of row i of the seed's system for the c_i:
+/// The right-hand side of row i of the lecture's system for the c_i:
 ///     3 (a_{i+1} - a_i) / D_i - 3 (a_i - a_{i-1}) / D_{i-1}.
 template <class T>
 T curvature_rhs(const std::vector<T>& a, const std::vector<double>& t, std::size_t i) {
   return 3.0 * (a[i + 1] - a[i]) / (t[i + 1] - t[i]) - 3.0 * (a[i] - a[i - 1]) / (t[i] - t[i - 1]);
 }
 
-/// Seed 000 §1.6, "Algorithm for a natural cubic spline": a_i = p_i,
+/// Ch. 1 §1.6, "Algorithm for a natural cubic spline": a_i = p_i,
 /// c_0 = c_N = 0, and for i = 1..N-1
 ///     D_{i-1} c_{i-1} + 2 (D_{i-1} + D_i) c_i + D_i c_{i+1}
 ///         = 3 (a_{i+1} - a_i) / D_i - 3 (a_i - a_{i-1}) / D_{i-1},
@@ -138,9 +138,9 @@ PiecewiseCubic<T> natural(const std::vector<double>& t, const std::vector<T>& y)
   return power_form(t, y, c, EndCondition::kNatural);
 }
 
-/// Clamped ends S'(t_0) = s0 and S'(t_N) = sN (seed 000 §1.6 names the
+/// Clamped ends S'(t_0) = s0 and S'(t_N) = sN (ch. 1 §1.6 names the
 /// conditions g'(t_0) = p'_0, g'(t_N) = p'_n). Two more rows join the natural
-/// system, both from the seed's formula for b_i:
+/// system, both from the lecture's formula for b_i:
 ///   b_0 = s0                         gives  2 D_0 c_0 + D_0 c_1 = 3 (a_1 - a_0) / D_0 - 3 s0,
 ///   S'(t_N) = b_{N-1} + (c_{N-1} + c_N) D_{N-1} = sN
 ///                                    gives  D_{N-1} c_{N-1} + 2 D_{N-1} c_N = 3 sN - 3 (a_N - a_{N-1}) / D_{N-1}.
@@ -172,10 +172,10 @@ PiecewiseCubic<T> clamped(const std::vector<double>& t, const std::vector<T>& y,
   return s;
 }
 
-/// Seed 000 §1.6, "Algorithm for a periodic cubic spline": the natural
+/// Ch. 1 §1.6, "Algorithm for a periodic cubic spline": the natural
 /// system's rows for every node i = 0..N-1, with indices taken cyclically
 /// (a_N = a_0, a_{-1} = a_{N-1}, D_{-1} = D_{N-1}), so row 0 reaches c_{N-1}
-/// and row N-1 reaches c_0: the seed's cyclic tridiagonal matrix.
+/// and row N-1 reaches c_0: the lecture's cyclic tridiagonal matrix.
 template <class T>
 PiecewiseCubic<T> periodic(const std::vector<double>& t, const std::vector<T>& y) {
   const std::string what = "periodic_cubic_spline";
@@ -216,7 +216,7 @@ T derivative_of_segment(const PiecewiseCubic<T>& s, std::size_t i, double u, int
   }
 }
 
-/// The Bézier ordinates of segment i (seed 000 §1.6: the derivatives of a
+/// The Bézier ordinates of segment i (ch. 1 §1.6: the derivatives of a
 /// Bézier segment over an interval of length D at its start are
 /// S' = 3 (b_1 - b_0) / D and S'' = 6 (b_0 - 2 b_1 + b_2) / D^2):
 ///     b_0 = a, b_1 = a + b D/3, b_2 = a + 2 b D/3 + c D^2/3, b_3 = S(t_{i+1}).
@@ -235,7 +235,7 @@ std::array<T, 4> bezier_ordinates(const PiecewiseCubic<T>& s, std::size_t i) {
 
 /// The de Boor points Q_0..Q_{N+2} of the spline's B-spline form (see
 /// bspline_curve in the header). Segment i's inner Bézier points lie on the
-/// leg Q_{i+1} Q_{i+2}, cut in the ratio D_{i-1} : D_i : D_{i+1} (the seed's
+/// leg Q_{i+1} Q_{i+2}, cut in the ratio D_{i-1} : D_i : D_{i+1} (the lecture's
 /// first and third rows of step 2). Solving those two rows for Q_{i+1}:
 ///     Q_{i+1} = ((D_{i-1} + D_i) b_{3i+1} - D_{i-1} b_{3i+2}) / D_i.
 /// Open: D_{-1} = 0 gives Q_1 = b_1, and Q_0 = b_0, Q_{N+1} = b_{3N-1},
@@ -289,9 +289,9 @@ std::vector<double> spline_knots(const std::vector<double>& t, bool closed) {
   return U;
 }
 
-// --- the seed's Bézier spline through de Boor points -----------------------------
+// --- the lecture's Bézier spline through de Boor points -----------------------------
 
-/// Step 2 of seed 000 §1.6's three-step algorithm. Unknowns d_0..d_N (open)
+/// Step 2 of ch. 1 §1.6's three-step algorithm. Unknowns d_0..d_N (open)
 /// or d_0..d_{N-1} (closed). The row of interior node p_i comes from
 ///     (D_{i-1} + D_i) p_i = D_i b_{3i-1} + D_{i-1} b_{3i+1}            (C1 at p_i)
 /// with b_{3i-1} on the leg d_{i-1} d_i (segment i-1) and b_{3i+1} on d_i d_{i+1}:
@@ -299,7 +299,7 @@ std::vector<double> spline_knots(const std::vector<double>& t, bool closed) {
 ///                         + (D_i (D_{i-2} + D_{i-1}) / S_{i-1} + D_{i-1} (D_i + D_{i+1}) / S_i) d_i
 ///                         + D_{i-1}^2 / S_i d_{i+1},
 ///     S_i = D_{i-1} + D_i + D_{i+1}.
-/// (The seed multiplies the whole row by a single S, which is right when the
+/// (The lecture multiplies the whole row by a single S, which is right when the
 /// intervals are equal, as in its equidistant case 6 b_3 = d_0 + 4 d_1 + d_2;
 /// segments i-1 and i have their own S in general.)
 std::vector<Vec3> solve_de_boor(const std::string& what, const std::vector<double>& t, const std::vector<Vec3>& P,
@@ -331,7 +331,7 @@ std::vector<Vec3> solve_de_boor(const std::string& what, const std::vector<doubl
 
   const std::size_t last = static_cast<std::size_t>(N);
   if (end == EndCondition::kClamped) {
-    // Step 1, the seed's choice: b_1 and b_{3N-1} given; D_{-1} = D_N = 0 makes
+    // Step 1, the lecture's choice: b_1 and b_{3N-1} given; D_{-1} = D_N = 0 makes
     // them the end de Boor points.
     diag[0] = 1;
     rhs[0] = b1;
@@ -354,7 +354,7 @@ std::vector<Vec3> solve_de_boor(const std::string& what, const std::vector<doubl
 /// Step 3: each segment's inner Bézier points on its leg d_i d_{i+1}:
 ///     b_{3i+1} = ((D_i + D_{i+1}) d_i + D_{i-1} d_{i+1}) / S_i
 ///     b_{3i+2} = (D_{i+1} d_i + (D_{i-1} + D_i) d_{i+1}) / S_i.
-/// (The seed marches along with its equations 1) and 3), the C1 and C2
+/// (The lecture marches along with its equations 1) and 3), the C1 and C2
 /// conditions at each node; the legs give the same points without carrying
 /// rounding errors from segment to segment. The tests check 1) and 3).)
 std::vector<BezierCurve> bezier_from_de_boor(const std::vector<double>& t, const std::vector<Vec3>& P,

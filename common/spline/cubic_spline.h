@@ -1,9 +1,9 @@
-// common/spline/cubic_spline.h — interpolating cubic splines (seed 000 §1.6).
+// common/spline/cubic_spline.h — interpolating cubic splines (ch. 1 §1.6).
 //
 // Given nodes t_0 < t_1 < ... < t_N and values p_0..p_N, the cubic spline S
 // is a cubic on each interval [t_i, t_{i+1}], passes through S(t_i) = p_i and
 // is C2 (value, slope and curvature continuous) at every interior node. That
-// leaves two degrees of freedom, fixed by the end conditions (seed 000 §1.6):
+// leaves two degrees of freedom, fixed by the end conditions (ch. 1 §1.6):
 //
 //   natural    S''(t_0) = S''(t_N) = 0
 //   clamped    S'(t_0) and S'(t_N) given (the end derivatives)
@@ -12,22 +12,22 @@
 //              runs from p_{N-1} back to p_0 over [t_{N-1}, t_N].
 //
 // The values are numbers (a function y = S(t)) or points (a parametric curve
-// X(t); seed 000 §1.6, "Algorithm for parametric cubic curves": each of x, y, z
+// X(t); ch. 1 §1.6, "Algorithm for parametric cubic curves": each of x, y, z
 // is a spline over the same nodes). Get the nodes of a curve from
 // parameters() in parameterization.h; for a closed curve pass closed = true.
 //
 // Three forms of the same spline:
-//   PiecewiseCubic   the seed's power form a_i + b_i h + c_i h^2 + d_i h^3,
+//   PiecewiseCubic   the lecture's power form a_i + b_i h + c_i h^2 + d_i h^3,
 //   BezierCurve      one cubic Bézier segment per interval (bezier_segments),
 //   BsplineCurve     one C2 cubic B-spline (bspline_curve): clamped knots
 //                    t_0 t_0 t_0 t_0 t_1 ... t_{N-1} t_N t_N t_N t_N, or a
 //                    periodic knot vector for a closed curve.
-// and the seed's own route to the Bézier form through de Boor points
+// and the lecture's own route to the Bézier form through de Boor points
 // (bezier_spline_through). The tests check that all of them agree.
 //
 // A cusp on a closed outline (the trailing edge of a wing section) wants no
 // C2 seam: start and end a natural spline at the cusp, p_0 = p_N, instead of
-// closing it periodically (seed 000 §1.6, comment after the parametric
+// closing it periodically (ch. 1 §1.6, comment after the parametric
 // algorithm).
 #pragma once
 
@@ -41,7 +41,7 @@ namespace gllab::spline {
 
 enum class EndCondition { kNatural, kClamped, kPeriodic };
 
-/// A piecewise cubic in the seed's power form (seed 000 §1.6):
+/// A piecewise cubic in the lecture's power form (ch. 1 §1.6):
 ///     S(t) = a[i] + b[i] h + c[i] h^2 + d[i] h^3,  h = t - t[i],  t in [t[i], t[i+1]],
 /// so a[i] = S(t_i), b[i] = S'(t_i), c[i] = S''(t_i) / 2, d[i] = S'''/6 on segment i.
 /// T is double for a function, Vec3 for a curve.
@@ -60,7 +60,7 @@ using CubicSpline = PiecewiseCubic<Vec3>;
 // --- construction (the nodes t must increase strictly) ------------------------
 
 /// Natural cubic spline through (t[i], y[i]), i = 0..N: S''(t_0) = S''(t_N) = 0.
-/// Seed 000 §1.6, "Algorithm for a natural cubic spline". Needs N >= 1.
+/// Ch. 1 §1.6, "Algorithm for a natural cubic spline". Needs N >= 1.
 ScalarCubicSpline natural_cubic_spline(const std::vector<double>& t, const std::vector<double>& y);
 CubicSpline natural_cubic_spline(const std::vector<double>& t, const std::vector<Vec3>& P);
 
@@ -72,7 +72,7 @@ CubicSpline clamped_cubic_spline(const std::vector<double>& t, const std::vector
                                  Vec3 tangent_end);
 
 /// Periodic (closed) cubic spline through y[0..N-1] at t[0..N-1], returning to
-/// y[0] at t[N]: t has one entry more than y. Seed 000 §1.6, "Algorithm for a
+/// y[0] at t[N]: t has one entry more than y. Ch. 1 §1.6, "Algorithm for a
 /// periodic cubic spline". Needs N >= 2; y[N-1] must not repeat y[0] (curves).
 ScalarCubicSpline periodic_cubic_spline(const std::vector<double>& t, const std::vector<double>& y);
 CubicSpline periodic_cubic_spline(const std::vector<double>& t, const std::vector<Vec3>& P);
@@ -99,7 +99,7 @@ Vec3 segment_derivative(const CubicSpline& s, std::size_t i, double u, int k);
 
 /// One cubic BezierCurve per segment over [a, b] = [t_i, t_{i+1}]: with
 /// h = t_{i+1} - t_i, the Bézier points are a, a + b h/3, a + 2b h/3 + c h^2/3,
-/// and S(t_{i+1}) (seed 000 §1.6, Bézier derivatives at the end points).
+/// and S(t_{i+1}) (ch. 1 §1.6, Bézier derivatives at the end points).
 std::vector<BezierCurve> bezier_segments(const CubicSpline& s);
 
 /// The same curve as one C2 cubic B-spline over [t_0, t_N] (exact, no fitting).
@@ -107,8 +107,8 @@ std::vector<BezierCurve> bezier_segments(const CubicSpline& s);
 /// points. Periodic: the knots continue periodically beyond both ends
 /// (U[3 + j] = t_{j mod N} + (j div N)(t_N - t_0), j = -3..N+3) and the first
 /// three control points repeat at the end, so the curve closes C2 by itself.
-/// The control points are the de Boor points of the seed's Bézier-spline
-/// construction (seed 000 §1.6): the inner Bézier points b_{3i+1}, b_{3i+2}
+/// The control points are the de Boor points of the lecture's Bézier-spline
+/// construction (ch. 1 §1.6): the inner Bézier points b_{3i+1}, b_{3i+2}
 /// of segment i divide the leg d_i d_{i+1} in the ratio D_{i-1} : D_i : D_{i+1}
 /// of the neighbouring interval lengths, which is solved for d_i.
 BsplineCurve bspline_curve(const CubicSpline& s);
@@ -118,9 +118,9 @@ BsplineCurve bspline_curve(const CubicSpline& s);
 /// abscissa xi_i = (U[i+1] + U[i+2] + U[i+3]) / 3, so that curve_point(u) = (u, S(u)).
 BsplineCurve bspline_curve(const ScalarCubicSpline& s);
 
-// --- interpolating cubic Bézier splines through de Boor points (seed 000 §1.6) ---
+// --- interpolating cubic Bézier splines through de Boor points (ch. 1 §1.6) ---
 //
-// The seed's three steps, for points p_0..p_N at nodes t_0..t_N, with
+// The lecture's three steps, for points p_0..p_N at nodes t_0..t_N, with
 // D_i = t_{i+1} - t_i and Bézier points b_0..b_{3N}, b_{3i} = p_i:
 //   1) choose the end condition: the inner Bézier points b_1 and b_{3N-1}
 //      (equivalently the end tangents, S'(t_0) = 3 (b_1 - b_0) / D_0), or
@@ -132,11 +132,11 @@ BsplineCurve bspline_curve(const ScalarCubicSpline& s);
 //      with D_{-1} = D_N = 0 (so d_0 = b_1 and d_N = b_{3N-1}), and
 //        (D_{i-1} + D_i) p_i = D_i b_{3i-1} + D_{i-1} b_{3i+1}   (C1 at p_i);
 //   3) place the remaining Bézier points on the legs.
-// The d_i are the control points of bspline_curve(). The seed's equidistant
+// The d_i are the control points of bspline_curve(). The lecture's equidistant
 // example keeps D_{-1} = D_N = 1 instead of 0: that moves d_0 and d_N but not
 // b_1, b_{3N-1} or the curve.
 
-/// Step 2 with b_1 and b_{3N-1} given (the seed's choice): d_0..d_N.
+/// Step 2 with b_1 and b_{3N-1} given (the lecture's choice): d_0..d_N.
 std::vector<Vec3> de_boor_points_through(const std::vector<double>& t, const std::vector<Vec3>& P, Vec3 b1,
                                          Vec3 b_last);
 /// Step 2 with natural ends (kNatural: b_1 = (b_0 + b_2) / 2, i.e. S''(t_0) = 0,

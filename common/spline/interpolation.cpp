@@ -1,4 +1,4 @@
-// common/spline/interpolation.cpp — polynomial interpolation (seed 000 §1.6).
+// common/spline/interpolation.cpp — polynomial interpolation (ch. 1 §1.6).
 // See interpolation.h for what each function returns.
 #include "spline/interpolation.h"
 
@@ -17,7 +17,7 @@ namespace {
 
 // ---- checks shared by every method ------------------------------------------
 
-/// Nodes must be there, finite and pairwise distinct (seed 000 §1.6:
+/// Nodes must be there, finite and pairwise distinct (ch. 1 §1.6:
 /// "pairwise unequal nodes t_i"), else the Vandermonde matrix is singular and
 /// L_i and the divided differences divide by zero.
 void require_nodes(const std::vector<double>& nodes, const std::string& what) {
@@ -147,7 +147,7 @@ std::vector<T> hermite_any(const std::vector<HermiteNode<T>>& nodes) {
   }
   require_nodes(t, what);
 
-  // One row per condition p^(j)(t_i) = f_i^(j) (seed 000 §1.6, Theorem 3):
+  // One row per condition p^(j)(t_i) = f_i^(j) (ch. 1 §1.6, Theorem 3):
   // d^j/dt^j t^k = k (k-1) ... (k-j+1) t^(k-j) for k >= j, else 0.
   std::vector<std::vector<double>> A;
   std::vector<T> rhs;
@@ -234,7 +234,7 @@ double lagrange_basis(const std::vector<double>& nodes, int i, double t) {
   require_finite(t, what, "t");
   if (i < 0 || i >= static_cast<int>(nodes.size()))
     fail(what + ": i=" + std::to_string(i) + " is outside 0.." + std::to_string(nodes.size() - 1));
-  // L_i(t) = prod_{k != i} (t - t_k) / (t_i - t_k)   (seed 000 §1.6, Theorem 2)
+  // L_i(t) = prod_{k != i} (t - t_k) / (t_i - t_k)   (ch. 1 §1.6, Theorem 2)
   const std::size_t ii = static_cast<std::size_t>(i);
   double L = 1;
   for (std::size_t k = 0; k < nodes.size(); ++k)
@@ -269,7 +269,7 @@ double newton_basis(const std::vector<double>& nodes, int i, double t) {
   if (i < 0 || i > static_cast<int>(nodes.size()))
     fail(what + ": i=" + std::to_string(i) + " is outside 0.." + std::to_string(nodes.size()) +
          " (N_i uses the nodes t_0..t_{i-1})");
-  double N = 1;  // N_i(t) = prod_{k=0}^{i-1} (t - t_k)   (seed 000 §1.6)
+  double N = 1;  // N_i(t) = prod_{k=0}^{i-1} (t - t_k)   (ch. 1 §1.6)
   for (int k = 0; k < i; ++k) {
     require_finite(nodes[static_cast<std::size_t>(k)], what, at("t", static_cast<std::size_t>(k)));
     N *= t - nodes[static_cast<std::size_t>(k)];
@@ -295,7 +295,7 @@ void NewtonInterpolant<T>::add_node(double t, T value) {
     if (nodes_[j] == t)
       fail(what + ": t=" + num(t) + " equals node " + at("t", j) + " (nodes must be pairwise distinct)");
 
-  // The new node is t_n. It adds the bottom diagonal of the scheme (seed 000
+  // The new node is t_n. It adds the bottom diagonal of the scheme (ch. 1
   // §1.6): f[t_n], f[t_{n-1}, t_n], ..., f[t_0..t_n]. Each entry needs the one
   // just computed and one already in the table, so nothing else changes.
   const std::size_t n = nodes_.size();
@@ -336,7 +336,7 @@ template class NewtonInterpolant<Vec3>;
 HermiteBasis cubic_hermite_basis(double t) {
   require_finite(t, "cubic_hermite_basis", "t");
   const double t2 = t * t, t3 = t2 * t;
-  // seed 000 §1.6, "the resulting Hermite polynomials are":
+  // ch. 1 §1.6, "the resulting Hermite polynomials are":
   return {2 * t3 - 3 * t2 + 1,  // H0
           t3 - 2 * t2 + t,      // H0-bar
           -2 * t3 + 3 * t2,     // H1
@@ -350,7 +350,7 @@ HermiteBasis cubic_hermite_basis_derivative(double t) {
 }
 
 const std::array<std::array<double, 4>, 4>& hermite_matrix() {
-  // seed 000 §1.6: (c0, c1, c2, c3) = M (f(0), f'(0), f(1), f'(1)).
+  // ch. 1 §1.6: (c0, c1, c2, c3) = M (f(0), f'(0), f(1), f'(1)).
   static const std::array<std::array<double, 4>, 4> M = {{
       {{1, 0, 0, 0}},
       {{0, 1, 0, 0}},
@@ -364,7 +364,7 @@ Vec3 hermite_point(Vec3 p0, Vec3 m0, Vec3 p1, Vec3 m1, double t) {
   const std::string what = "hermite_point";
   require_segment_data(p0, m0, p1, m1, what);
   const HermiteBasis H = cubic_hermite_basis(checked_segment_parameter(t, 0, 1, what));
-  // X(t) = H0 f(0) + H1 f(1) + H0-bar f'(0) + H1-bar f'(1)   (seed 000 §1.6)
+  // X(t) = H0 f(0) + H1 f(1) + H0-bar f'(0) + H1-bar f'(1)   (ch. 1 §1.6)
   return H.H0 * p0 + H.H1 * p1 + H.H0bar * m0 + H.H1bar * m1;
 }
 

@@ -1,7 +1,7 @@
 // common/spline/interpolation.h — polynomial interpolation: given nodes t_i
 // and values f_i (numbers or points), find the polynomial p with p(t_i) = f_i.
 //
-// Four ways to the same polynomial, as in seed 000 §1.6 "Interpolation problem":
+// Four ways to the same polynomial, as in ch. 1 §1.6 "Interpolation problem":
 //   - Vandermonde: solve A c = f for the monomial coefficients c_j (Theorem 1),
 //   - Lagrange:    p(t) = sum f_i L_i(t) with L_i(t_j) = delta_ij (Theorem 2),
 //   - Newton:      p(t) = sum a_i N_i(t), a_i divided differences; nodes can be
@@ -10,7 +10,7 @@
 //                  Hermite basis H0, H0-bar, H1, H1-bar on [0, 1].
 //
 // Values are double or Vec3: a curve through points is three scalar problems
-// with the same matrix (seed 000 §1.6, "Note: ... For each coordinate, we get a
+// with the same matrix (ch. 1 §1.6, "Note: ... For each coordinate, we get a
 // linear system with an identical matrix A").
 //
 // Throughout, `nodes` are the t_i (pairwise distinct, finite) and `t` is where
@@ -36,16 +36,16 @@ std::vector<double> gauss_solve(std::vector<std::vector<double>> A, std::vector<
 /// The same with point right-hand sides: three systems sharing one matrix.
 std::vector<Vec3> gauss_solve(std::vector<std::vector<double>> A, std::vector<Vec3> rhs);
 
-// ---- monomial (power) form and Vandermonde (seed 000 §1.6, Theorem 1) ------
+// ---- monomial (power) form and Vandermonde (ch. 1 §1.6, Theorem 1) ------
 
-/// The Vandermonde matrix A[i][j] = t_i^j, i, j = 0..n (seed 000 §1.6).
+/// The Vandermonde matrix A[i][j] = t_i^j, i, j = 0..n (ch. 1 §1.6).
 /// det A = prod_{i>j} (t_i - t_j): regular exactly when the nodes differ.
 std::vector<std::vector<double>> vandermonde_matrix(const std::vector<double>& nodes);
 
 /// Monomial coefficients c_0..c_n of the interpolating polynomial, from the
-/// Vandermonde system A c = f solved by gauss_solve (seed 000 §1.6, Theorem 1).
+/// Vandermonde system A c = f solved by gauss_solve (ch. 1 §1.6, Theorem 1).
 /// Note how quickly A becomes ill-conditioned as n grows: this is the method
-/// the seed proves existence with, not the one to use for many nodes.
+/// the lecture proves existence with, not the one to use for many nodes.
 std::vector<double> vandermonde_coefficients(const std::vector<double>& nodes, const std::vector<double>& f);
 std::vector<Vec3> vandermonde_coefficients(const std::vector<double>& nodes, const std::vector<Vec3>& f);
 
@@ -54,7 +54,7 @@ std::vector<Vec3> vandermonde_coefficients(const std::vector<double>& nodes, con
 double monomial_value(const std::vector<double>& c, double t);
 Vec3 monomial_value(const std::vector<Vec3>& c, double t);
 
-// ---- Lagrange (seed 000 §1.6, Theorem 2) ------------------------------------
+// ---- Lagrange (ch. 1 §1.6, Theorem 2) ------------------------------------
 
 /// L_i(t) = prod_{k != i} (t - t_k) / (t_i - t_k): 1 at t_i, 0 at every other node.
 double lagrange_basis(const std::vector<double>& nodes, int i, double t);
@@ -65,13 +65,13 @@ std::vector<double> lagrange_basis_all(const std::vector<double>& nodes, double 
 double lagrange_value(const std::vector<double>& nodes, const std::vector<double>& f, double t);
 Vec3 lagrange_value(const std::vector<double>& nodes, const std::vector<Vec3>& f, double t);
 
-// ---- Newton (seed 000 §1.6, "Newton interpolation") ------------------------
+// ---- Newton (ch. 1 §1.6, "Newton interpolation") ------------------------
 
 /// The Newton basis N_i(t) = prod_{k=0}^{i-1} (t - t_k); N_0 = 1. N_i vanishes
 /// at t_0..t_{i-1}. Uses nodes[0..i-1] only.
 double newton_basis(const std::vector<double>& nodes, int i, double t);
 
-/// The divided-difference table of seed 000 §1.6, column by column:
+/// The divided-difference table of ch. 1 §1.6, column by column:
 /// table[k][j] = f[t_j, ..., t_{j+k}], k = 0..n, j = 0..n-k, where
 ///   f[t_j] = f_j,
 ///   f[t_j..t_{j+k}] = (f[t_{j+1}..t_{j+k}] - f[t_j..t_{j+k-1}]) / (t_{j+k} - t_j).
@@ -81,11 +81,11 @@ std::vector<std::vector<double>> divided_difference_table(const std::vector<doub
 std::vector<std::vector<Vec3>> divided_difference_table(const std::vector<double>& nodes,
                                                         const std::vector<Vec3>& f);
 
-/// The Newton form built one node at a time (seed 000 §1.6: "additional nodes
+/// The Newton form built one node at a time (ch. 1 §1.6: "additional nodes
 /// can be added without having to re-compute all basis functions").
 ///
 ///   NewtonInterpolant<double> p;
-///   p.add_node(0, 1); p.add_node(2, 3); p.add_node(4, 5);   // seed example
+///   p.add_node(0, 1); p.add_node(2, 3); p.add_node(4, 5);   // lecture example
 ///   p.coefficients();   // {1, 1, 0}: p(x) = 1 + 1 (x - 0) + 0 (x - 0)(x - 2)
 ///   p(3.0);             // 4
 ///
@@ -106,7 +106,7 @@ class NewtonInterpolant {
   /// The whole triangular table, laid out like divided_difference_table():
   /// table()[k][j] = f[t_j, ..., t_{j+k}]. A lab draws it column by column.
   const std::vector<std::vector<T>>& table() const { return table_; }
-  /// Number of nodes (degree + 1; the degree may be lower, seed 000 §1.6 "Beware").
+  /// Number of nodes (degree + 1; the degree may be lower, ch. 1 §1.6 "Beware").
   int size() const { return static_cast<int>(nodes_.size()); }
 
   /// p(t), nested like Horner's rule:
@@ -123,9 +123,9 @@ class NewtonInterpolant {
 extern template class NewtonInterpolant<double>;
 extern template class NewtonInterpolant<Vec3>;
 
-// ---- cubic Hermite (seed 000 §1.6, "Hermite interpolation") ----------------
+// ---- cubic Hermite (ch. 1 §1.6, "Hermite interpolation") ----------------
 
-/// The four cubic Hermite polynomials at one parameter (seed 000 §1.6):
+/// The four cubic Hermite polynomials at one parameter (ch. 1 §1.6):
 ///   H0(t)     = 2t^3 - 3t^2 + 1      value 1 at t = 0
 ///   H0bar(t)  = t^3 - 2t^2 + t       slope 1 at t = 0
 ///   H1(t)     = -2t^3 + 3t^2         value 1 at t = 1
@@ -141,14 +141,14 @@ HermiteBasis cubic_hermite_basis(double t);
 /// H1' = -6t^2 + 6t, H1-bar' = 3t^2 - 2t.
 HermiteBasis cubic_hermite_basis_derivative(double t);
 
-/// The Hermite matrix of seed 000 §1.6: (c_0, c_1, c_2, c_3) = M (f(0), f'(0),
+/// The Hermite matrix of ch. 1 §1.6: (c_0, c_1, c_2, c_3) = M (f(0), f'(0),
 /// f(1), f'(1)), c ascending monomial coefficients. It is the inverse of the
 /// system matrix [[1,0,0,0], [0,1,0,0], [1,1,1,1], [0,1,2,3]]; column k holds
 /// the coefficients of H0, H0-bar, H1, H1-bar respectively.
 const std::array<std::array<double, 4>, 4>& hermite_matrix();
 
 /// The cubic Hermite segment X(t) = H0 p0 + H1 p1 + H0bar m0 + H1bar m1 on
-/// [0, 1] (seed 000 §1.6, "Interpolation"): X(0) = p0, X(1) = p1, X'(0) = m0,
+/// [0, 1] (ch. 1 §1.6, "Interpolation"): X(0) = p0, X(1) = p1, X'(0) = m0,
 /// X'(1) = m1. Throws if t is outside [0, 1] or anything is not finite; a t
 /// that misses only by round-off (4 machine epsilons of the interval's size,
 /// as for Bézier curves, bezier.h) is taken as the end.
@@ -163,10 +163,10 @@ Vec3 hermite_derivative(Vec3 p0, Vec3 m0, Vec3 p1, Vec3 m1, double t);
 /// (chain rule: dX/dt = (1/h) dX/ds, so the s-tangents are h m). Needs a < b.
 Vec3 hermite_point(Vec3 p0, Vec3 m0, Vec3 p1, Vec3 m1, double t, double a, double b);
 
-// ---- general Hermite interpolation (seed 000 §1.6, Theorem 3) --------------
+// ---- general Hermite interpolation (ch. 1 §1.6, Theorem 3) --------------
 
 /// One node of a Hermite problem: derivatives[j] = f^(j)(t), j = 0..n_i-1
-/// (derivatives[0] is the value). seed 000 §1.6 "Interpolating derivatives".
+/// (derivatives[0] is the value). ch. 1 §1.6 "Interpolating derivatives".
 template <class T>
 struct HermiteNode {
   double t = 0;
@@ -174,8 +174,8 @@ struct HermiteNode {
 };
 
 /// Monomial coefficients c_0..c_m, m = sum n_i - 1, of the unique polynomial
-/// with p^(j)(t_i) = f_i^(j) (seed 000 §1.6, Theorem 3). Built exactly as the
-/// seed does: one row per condition, d^j/dt^j t^k = k!/(k-j)! t^(k-j), solved
+/// with p^(j)(t_i) = f_i^(j) (ch. 1 §1.6, Theorem 3). Built exactly as the
+/// lecture does: one row per condition, d^j/dt^j t^k = k!/(k-j)! t^(k-j), solved
 /// by gauss_solve (a "confluent" Vandermonde system). With nodes 0 and 1 and
 /// two conditions each this is the cubic Hermite system above.
 /// Throws on no nodes, a node with no conditions, equal nodes, non-finite data.

@@ -41,7 +41,7 @@ BsplineCurve from_homogeneous(int p, const std::vector<double>& U, const std::ve
 namespace {
 void check_r(double r) {
   require_finite(r, "conic", "r");
-  if (r < 0 || r >= 1) fail("conic: r=" + num(r) + " must satisfy 0 <= r < 1 (seed 000 §1.6: weight r/(1-r))");
+  if (r < 0 || r >= 1) fail("conic: r=" + num(r) + " must satisfy 0 <= r < 1 (ch. 1 §1.6: weight r/(1-r))");
 }
 }  // namespace
 

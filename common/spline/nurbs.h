@@ -1,5 +1,5 @@
 // common/spline/nurbs.h — rational curves: homogeneous points, conic sections
-// from the seeds' r parameter, the exact circle.
+// from the lecture's r parameter, the exact circle.
 //
 // A NURBS curve is a BsplineCurve with weights w (types.h). Its points in
 // homogeneous space are Pw = (w x, w y, w z, w), the premultiplied form GLU
@@ -26,32 +26,32 @@ std::vector<Vec4> to_homogeneous(const BsplineCurve& curve);
 BsplineCurve from_homogeneous(int p, const std::vector<double>& U, const std::vector<Vec4>& Pw,
                               int dimension = 3);
 
-// ---- conic sections by r (seed 000 §1.6 "Conic sections") --------------------
+// ---- conic sections by r (ch. 1 §1.6 "Conic sections") --------------------
 
-/// The seeds' rational quadratic: X(u) = (P0 N0 + r/(1-r) P1 N1 + P2 N2) /
+/// The lecture's rational quadratic: X(u) = (P0 N0 + r/(1-r) P1 N1 + P2 N2) /
 /// (N0 + r/(1-r) N1 + N2) on the knots {0,0,0,1,1,1} (a rational Bézier arc from
-/// P0 to P2 with the apex P1). The seeds call it "cubic"; its basis N_{i,3} has
+/// P0 to P2 with the apex P1). The lecture calls it "cubic"; its basis N_{i,3} has
 /// order 3, i.e. degree 2.
 enum class ConicType { Line, Ellipse, Parabola, Hyperbola };
 
 /// r = 0 line, 0 < r < 1/2 ellipse, r = 1/2 parabola, 1/2 < r < 1 hyperbola
-/// (seed 000 §1.6). Throws for r < 0, r >= 1 or NaN.
+/// (ch. 1 §1.6). Throws for r < 0, r >= 1 or NaN.
 ConicType classify_conic(double r);
 const char* to_string(ConicType type);
 
-/// The middle weight w1 = r / (1 - r) (seed 000 §1.6); 0 <= r < 1.
+/// The middle weight w1 = r / (1 - r) (ch. 1 §1.6); 0 <= r < 1.
 double conic_weight(double r);
 /// Its inverse, r = w1 / (1 + w1); w1 >= 0.
 double conic_r(double w1);
 
 /// The conic arc as a curve {p = 2, U = {0,0,0,1,1,1}, P = {P0, P1, P2},
-/// w = {1, r/(1-r), 1}} for 0 < r < 1. For r = 0 the seeds' curve is the
+/// w = {1, r/(1-r), 1}} for 0 < r < 1. For r = 0 the lecture's curve is the
 /// straight segment P0P2, but a weight 0 is not allowed in a BsplineCurve:
 /// it is returned as the polynomial quadratic {P0, (P0 + P2)/2, P2} (the same
-/// points, a different parametrisation; conic_point keeps the seeds' one).
+/// points, a different parametrisation; conic_point keeps the lecture's one).
 BsplineCurve conic_arc(Vec3 P0, Vec3 P1, Vec3 P2, double r, int dimension = 3);
 
-/// The seeds' formula evaluated directly at u in [0, 1], 0 <= r < 1 (r = 0
+/// The lecture's formula evaluated directly at u in [0, 1], 0 <= r < 1 (r = 0
 /// included: the weight 0 leaves the segment P0P2).
 Vec3 conic_point(Vec3 P0, Vec3 P1, Vec3 P2, double r, double u);
 

@@ -1,5 +1,5 @@
 // common/spline/parameterization.cpp — uniform, chordal, centripetal, Foley
-// and Nielson parameter values (seed 000 §1.6, "Parameterizations").
+// and Nielson parameter values (ch. 1 §1.6, "Parameterizations").
 #include "spline/parameterization.h"
 
 #include <algorithm>
@@ -94,15 +94,15 @@ const char* parameterization_name(Parameterization method) {
   return "unknown";
 }
 
-/// Seed 000 §1.6, "Nielson metric". The seed writes, for 2D points,
+/// Ch. 1 §1.6, "Nielson metric". The lecture writes, for 2D points,
 ///     |(x, y)|_N^2 = (x, y) [ Sy2/D  -Sxy/D ; -Sxy/D  Sx2/D ] (x, y)^T,
 ///     D = Sx2 Sy2 - Sxy^2,
 /// with the variances Sx2, Sy2 and covariance Sxy of the N points (1/N sums
 /// around the mean). That matrix is the inverse of the covariance matrix
-/// [ Sx2 Sxy ; Sxy Sy2 ]. (The seed prints +Sxy/D in the top-right corner; the
+/// [ Sx2 Sxy ; Sxy Sy2 ]. (The lecture prints +Sxy/D in the top-right corner; the
 /// off-diagonal entries of an inverse symmetric matrix are equal, and with
 /// opposite signs they would cancel in the quadratic form and lose the
-/// affine invariance the seed claims.) Here the same inverse is taken in 3D,
+/// affine invariance the lecture claims.) Here the same inverse is taken in 3D,
 /// through the eigen-decomposition C = sum lambda_k e_k e_k^T, as
 ///     M = sum over lambda_k > 0 of (1 / lambda_k) e_k e_k^T,
 /// the pseudo-inverse, so that 2D points (z = 0) and collinear points, whose
@@ -162,27 +162,27 @@ std::vector<double> parameters(const std::vector<Vec3>& points, Parameterization
   std::vector<double> dt(chords);
   switch (method) {
     case Parameterization::kUniform:
-      // Equidistant: the same time for every chord (seed 000 §1.6, "Equidistant parameterization").
+      // Equidistant: the same time for every chord (ch. 1 §1.6, "Equidistant parameterization").
       for (double& step : dt) step = 1.0;
       break;
     case Parameterization::kChordal:
-      // Time proportional to distance (seed 000 §1.6, "Chordal parameterization").
+      // Time proportional to distance (ch. 1 §1.6, "Chordal parameterization").
       for (std::size_t i = 0; i < chords; ++i) dt[i] = norm(chord(i));
       break;
     case Parameterization::kCentripetal:
       // Square root of the distance: approximately minimizes the centripetal
-      // acceleration (seed 000 §1.6, "Centripetal parameterization", [Lee 1975]).
+      // acceleration (ch. 1 §1.6, "Centripetal parameterization", [Lee 1975]).
       for (std::size_t i = 0; i < chords; ++i) dt[i] = std::sqrt(norm(chord(i)));
       break;
     case Parameterization::kNielson: {
       // Chordal, with lengths in the affine-invariant Nielson metric
-      // (seed 000 §1.6, "Nielson metric"; figure 3 c, "affine invariant chord").
+      // (ch. 1 §1.6, "Nielson metric"; figure 3 c, "affine invariant chord").
       const std::vector<double> M = nielson_metric(points);
       for (std::size_t i = 0; i < chords; ++i) dt[i] = metric_length(M, chord(i));
       break;
     }
     case Parameterization::kFoley: {
-      // Foley–Nielson (seed 000 §1.6, "Foley parameterization", [Foley 1989]):
+      // Foley–Nielson (ch. 1 §1.6, "Foley parameterization", [Foley 1989]):
       //   dt_i = d_i (1 + 1.5 phi^_i d_{i-1} / (d_{i-1} + d_i)
       //                 + 1.5 phi^_{i+1} d_{i+1} / (d_i + d_{i+1})),
       //   phi^_i = min(pi - phi_i, pi / 2),

@@ -1,4 +1,4 @@
-// common/spline/surface.cpp — tensor-product surfaces (seed 000 §1.7). See
+// common/spline/surface.cpp — tensor-product surfaces (ch. 1 §1.7). See
 // surface.h for what each function returns and where its formula comes from.
 #include "spline/surface.h"
 
@@ -429,7 +429,7 @@ BezierSurface interpolating_bezier_surface(const std::vector<double>& us, const 
   require_nodes(us, what, "us");
   require_nodes(vs, what, "vs");
   const std::size_t rows = us.size(), cols = vs.size();
-  // Step 1 (seed 000 §1.7): one curve per column j through points[., j] at us.
+  // Step 1 (ch. 1 §1.7): one curve per column j through points[., j] at us.
   std::vector<Vec3> A(rows * cols);  // a_ij
   BezierCurve first;
   for (std::size_t j = 0; j < cols; ++j) {
@@ -578,7 +578,7 @@ Vec3 surface_point(const LagrangeSurface& surface, double u, double v) {
   const std::size_t cols = Lv.size();
   Vec3 f;
   for (std::size_t i = 0; i < Lu.size(); ++i) {
-    Vec3 ci;  // c_i(v) = sum_j c_ij L_j(v), the seeds' curve c-bar_i(t)
+    Vec3 ci;  // c_i(v) = sum_j c_ij L_j(v), the lecture's curve c-bar_i(t)
     for (std::size_t j = 0; j < cols; ++j) ci += Lv[j] * surface.c[i * cols + j];
     f += Lu[i] * ci;
   }
@@ -625,7 +625,7 @@ BezierSurface to_bezier(const HermitePatch& patch) {
   out.P.assign(16, Vec3{});
   // Corner (a, b): b at (i0, j0) is the point; one step inwards along u (v)
   // adds du/3 (dv/3) with the sign of the step; the inner point adds twist/9
-  // (seed 000 §1.7: Xu(0,0) = 3 (b_10 - b_00), Xuv(0,0) = 9 (b_11 - b_10 - b_01 + b_00)).
+  // (ch. 1 §1.7: Xu(0,0) = 3 (b_10 - b_00), Xuv(0,0) = 9 (b_11 - b_10 - b_01 + b_00)).
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {
       const int i0 = 3 * a, j0 = 3 * b;
@@ -817,7 +817,7 @@ BsplineSurface revolved_surface(const BsplineCurve& profile) {
 //    and once per vs[b], not once per point.
 // 2. Per row a, the control net blended along u once: Q[j] = sum_k N_k(u_a)
 //    Pw[k][j] and Qu[j] = sum_k N'_k(u_a) Pw[k][j] for every control column j
-//    (a tensor-product surface is a curve of curves, seed 000 §1.7). Every
+//    (a tensor-product surface is a curve of curves, ch. 1 §1.7). Every
 //    point of the row is then a short sum along v over q + 1 of them.
 // 3. The points of a row whose v lie in one knot span form a run; the run's
 //    q + 1 blended points are loaded once and grid_run<Qd> evaluates the run

@@ -3,18 +3,18 @@
 // twist vectors, iso-parameter curves, C^k continuation of a Bézier patch,
 // interpolating Bézier surfaces and a fast grid evaluator for tessellation.
 //
-// A tensor-product surface is made of two curve representations (seed 000
+// A tensor-product surface is made of two curve representations (ch. 1
 // §1.7, "Surface Representations"):
 //     X(u, v) = sum_i sum_j c_ij phi_i(u) psi_j(v) = sum_j c_j(u) psi_j(v),
 //     c_j(u) = sum_i c_ij phi_i(u):
 // evaluate one curve per column along u, then one curve along v through the
 // results (or the other way round; the result is the same).
 //
-// Notation. The seeds write (s, t) and put degree m along s, n along t; this
+// Notation. The lecture writes (s, t) and put degree m along s, n along t; this
 // file follows The NURBS Book and the rest of the core: parameters (u, v),
 // degree n (Bézier) or p (B-spline) along u with row index i, degree m or q
 // along v with column index j. Control nets are stored row by row,
-// P[i * (columns) + j], like BsplineSurface (types.h). Seed formulas below are
+// P[i * (columns) + j], like BsplineSurface (types.h). The lecture's formulas below are
 // rewritten in this notation.
 //
 // Checks: every function checks its surface and parameters and throws
@@ -32,7 +32,7 @@
 namespace gllab::spline {
 
 /// A point and its first partial derivatives at one (u, v): S, dS/du, dS/dv
-/// and the twist vector d^2S/(du dv) (seed 000 §1.7, "The twist vector").
+/// and the twist vector d^2S/(du dv) (ch. 1 §1.7, "The twist vector").
 struct SurfacePartials {
   Vec3 S, Su, Sv, Suv;
 };
@@ -45,11 +45,11 @@ enum class SurfaceDirection { U, V };
 /// and the unit normal takes the fallback described at surface_normal().
 inline constexpr double kDegenerateNormal = 1e-12;
 
-// ==== Bézier surfaces (seed 000 §1.7 "Bézier tensor product") ===============
+// ==== Bézier surfaces (ch. 1 §1.7 "Bézier tensor product") ===============
 
 /// X(u, v) = sum_{i=0..n} sum_{j=0..m} b_ij B_i^n(s) B_j^m(t) over the
 /// rectangle [a, b] x [c, d], with the local parameters s = (u - a) / (b - a),
-/// t = (v - c) / (d - c) (seed 000 §1.7, "For a more generic interval").
+/// t = (v - c) / (d - c) (ch. 1 §1.7, "For a more generic interval").
 /// The net has (n + 1) x (m + 1) points, b_ij = P[i * (m + 1) + j].
 struct BezierSurface {
   int n = 3, m = 3;       // degrees along u and v
@@ -73,13 +73,13 @@ struct ControlNet {
   const Vec3& point(int r, int k) const { return P[static_cast<std::size_t>(r) * cols + k]; }
 };
 
-/// Every net of the surface de Casteljau scheme, for drawing (seed 000 §1.7,
+/// Every net of the surface de Casteljau scheme, for drawing (ch. 1 §1.7,
 /// "De Casteljau algorithm for surfaces"):
 ///   b_ij^{00} = b_ij,
 ///   b_ij^{k+1,l} = (1 - s) b_ij^{kl} + s b_{i+1,j}^{kl}    (a step along u)
 ///   b_ij^{k,l+1} = (1 - t) b_ij^{kl} + t b_{i,j+1}^{kl}    (a step along v)
 /// until X(u, v) = b_00^{nm}. first == U runs all n steps along u, then the m
-/// steps along v (the seeds' order: one curve per column, then the curve
+/// steps along v (the lecture's order: one curve per column, then the curve
 /// through their points); first == V the other way round. Either order gives
 /// the same point.
 struct BezierSurfaceConstruction {
@@ -96,12 +96,12 @@ struct BezierSurfaceConstruction {
   double s = 0, t = 0;       // the local parameters used
 };
 
-/// The whole scheme at (u, v). The partials come out of it too (seed 000
+/// The whole scheme at (u, v). The partials come out of it too (ch. 1
 /// §1.7): with the 2 x 2 net q_kl = b_kl^{n-1,m-1},
 ///   Xu  = n [(1 - t)(q_10 - q_00) + t (q_11 - q_01)] / (b - a)
 ///   Xv  = m [(1 - s)(q_01 - q_00) + s (q_11 - q_10)] / (d - c)
 ///   Xuv = n m (q_11 - q_10 - q_01 + q_00) / ((b - a)(d - c)),
-/// the seeds' X_s = m (b_10^{m-1,n} - b_00^{m-1,n}) after the last v step.
+/// the lecture's X_s = m (b_10^{m-1,n} - b_00^{m-1,n}) after the last v step.
 /// A degree 0 direction has zero derivatives along it.
 BezierSurfaceConstruction de_casteljau(const BezierSurface& surface, double u, double v,
                                        SurfaceDirection first = SurfaceDirection::U);
@@ -115,26 +115,26 @@ Vec3 bernstein_surface_point(const BezierSurface& surface, double u, double v);
 
 /// SKL[k][l] = d^{k+l} X / du^k dv^l at (u, v), k + l <= d (other entries are
 /// zero): the rows are differentiated as Bézier curves along v
-/// (bezier_derivatives), then the resulting points along u (seed 000 §1.7,
+/// (bezier_derivatives), then the resulting points along u (ch. 1 §1.7,
 /// "partial derivatives"). Orders above the degree are zero.
 std::vector<std::vector<Vec3>> surface_derivs(const BezierSurface& surface, double u, double v, int d);
 
 /// X, Xu, Xv, Xuv at (u, v) (from surface_derivs).
 SurfacePartials surface_partials(const BezierSurface& surface, double u, double v);
 
-/// The unit normal (Xu x Xv) / |Xu x Xv| (seed 000 §1.7), with the fallback of
+/// The unit normal (Xu x Xv) / |Xu x Xv| (ch. 1 §1.7), with the fallback of
 /// surface_normal(const BsplineSurface&, ...) at degenerate points.
 Vec3 surface_normal(const BezierSurface& surface, double u, double v);
 
 /// The derivative d^{k+l}X / du^k dv^l as a Bézier surface of degrees
-/// (n - k, m - l) on the same rectangle (seed 000 §1.7):
+/// (n - k, m - l) on the same rectangle (ch. 1 §1.7):
 ///   A_kl sum_i sum_j Delta^{kl} b_ij B_i^{n-k}(s) B_j^{m-l}(t),
 ///   A_kl = n!/(n-k)! / (b-a)^k * m!/(m-l)! / (d-c)^l,
 /// e.g. the points n (b_{i+1,j} - b_ij) / (b - a) for Xu. Orders above the
 /// degree give the zero surface (one point). Throws if k or l is negative.
 BezierSurface derivative_surface(const BezierSurface& surface, int k, int l);
 
-/// The iso-parameter curves (seed 000 §1.7): v -> X(u0, v), a Bézier curve of
+/// The iso-parameter curves (ch. 1 §1.7): v -> X(u0, v), a Bézier curve of
 /// degree m on [c, d], and u -> X(u, v0), of degree n on [a, b]. Their points
 /// come from de Casteljau on each column (or row) of the net.
 BezierCurve iso_curve_u(const BezierSurface& surface, double u0);
@@ -144,7 +144,7 @@ BezierCurve iso_curve_v(const BezierSurface& surface, double v0);
 /// u and c^(m+1) d^(m+1) along v, the same net. Needs n, m >= 1.
 BsplineSurface to_bspline(const BezierSurface& surface);
 
-/// The interpolating Bézier surface (seed 000 §1.7, "Interpolating using
+/// The interpolating Bézier surface (ch. 1 §1.7, "Interpolating using
 /// Bézier surfaces"): degrees n = us.size() - 1, m = vs.size() - 1 on
 /// [min us, max us] x [min vs, max vs], with X(us[i], vs[j]) = points[i *
 /// vs.size() + j]. First one curve per column j through points[., j] at us
@@ -154,14 +154,14 @@ BsplineSurface to_bspline(const BezierSurface& surface);
 BezierSurface interpolating_bezier_surface(const std::vector<double>& us, const std::vector<double>& vs,
                                            const std::vector<Vec3>& points);
 
-/// C^k continuation across an edge (seed 000 §1.7, "Spline surfaces"). Patch
+/// C^k continuation across an edge (ch. 1 §1.7, "Spline surfaces"). Patch
 /// `a` covers [a, b] x [c, d]; its neighbour covers [b, b + next_length] x
 /// [c, d] (direction U) or [a, b] x [d, d + next_length] (direction V), with
 /// the same degrees. Every column of a's net (direction U) is a Bézier curve
 /// along u; evaluating it by de Casteljau at the neighbour's far end,
 /// tau = 1 + next_length / (b - a), outside [0, 1], gives the neighbour's
 /// points b_r = b_{n-r}^r(tau), r = 0..k (the polynomial continued). They
-/// satisfy the seeds' conditions
+/// satisfy the lecture's conditions
 ///   C0: b_0 = a_n,
 ///   C1: (a_n - a_{n-1}) / ds0 = (b_1 - b_0) / ds1,
 ///   C2: (a_n - 2 a_{n-1} + a_{n-2}) / ds0^2 = (b_2 - 2 b_1 + b_0) / ds1^2.
@@ -179,23 +179,23 @@ std::vector<std::vector<Vec3>> continuation_rows(const BezierSurface& a, int k, 
 BezierSurface joined_patch(const BezierSurface& a, const BezierSurface& next, int k,
                            SurfaceDirection direction = SurfaceDirection::U);
 
-/// The patch whose twist vector is the same everywhere (seed 000 §1.7, "The
+/// The patch whose twist vector is the same everywhere (ch. 1 §1.7, "The
 /// twist vector": surfaces with zero and with constant twist). Its boundary
 /// curves through the corner (a, c) are given, X(u, c) = edge_u over [a, b]
 /// and X(a, v) = edge_v over [c, d], and
 ///   b_ij = b_i0 + (b_0j - b_00) + i j (b - a)(d - c) / (n m) * twist,
 /// so every cell of the net has Delta^{11} b_ij = (b - a)(d - c) twist / (n m)
 /// and X_uv = n m Delta^{11} b_ij / ((b - a)(d - c)) = twist at every (u, v)
-/// (the seeds' X_st(0,0) = 9 (b_11 - b_10 - b_01 + b_00) on every cell).
+/// (the lecture's X_st(0,0) = 9 (b_11 - b_10 - b_01 + b_00) on every cell).
 /// twist = 0: the translational surface X(u, c) + X(a, v) - X(a, c), every
 /// v-curve the same curve moved along edge_u. The rows j = 0 and i = 0 are
 /// copied exactly. Needs degrees n, m >= 1 and edge_u.P[0] == edge_v.P[0].
 BezierSurface constant_twist_patch(const BezierCurve& edge_u, const BezierCurve& edge_v, Vec3 twist);
 
-// ==== Lagrange, Hermite and Hermite–Lagrange surfaces (seed 000 §1.7) =======
+// ==== Lagrange, Hermite and Hermite–Lagrange surfaces (ch. 1 §1.7) =======
 
 /// f(u, v) = sum_i sum_j c_ij L_i(u) L_j(v), the tensor product of the Lagrange
-/// polynomials on the nodes u_nodes[i], v_nodes[j] (seed 000 §1.7, "Lagrange
+/// polynomials on the nodes u_nodes[i], v_nodes[j] (ch. 1 §1.7, "Lagrange
 /// surfaces"). It interpolates: f(u_i, v_j) = c_ij = c[i * v_nodes.size() + j],
 /// and the curves through each row and column of c lie on the surface.
 /// (Its Bézier form, for derivatives and normals, is
@@ -209,7 +209,7 @@ void validate(const LagrangeSurface& surface);
 /// finite (u, v) (outside the nodes' box it extrapolates).
 Vec3 surface_point(const LagrangeSurface& surface, double u, double v);
 
-/// The bicubic Hermite patch on [0, 1]^2 (seed 000 §1.7, "Hermite surfaces"):
+/// The bicubic Hermite patch on [0, 1]^2 (ch. 1 §1.7, "Hermite surfaces"):
 /// the tensor product of the cubic Hermite polynomials H0, H0bar, H1, H1bar
 /// (interpolation.h). Index [a][b] is the corner (u, v) = (a, b):
 ///   X(u, v) = sum_{a,b in {0,1}}  H_a(u) H_b(v) point[a][b]
@@ -231,11 +231,11 @@ SurfacePartials surface_partials(const HermitePatch& patch, double u, double v);
 /// Unit normal with the fallback of surface_normal(const BsplineSurface&, ...).
 Vec3 surface_normal(const HermitePatch& patch, double u, double v);
 /// The same patch as a bicubic Bézier surface on [0, 1]^2: the corner formulas
-/// of seed 000 §1.7 (Xu(0,0) = 3 (b_10 - b_00), Xuv(0,0) = 9 (b_11 - b_10 -
+/// of ch. 1 §1.7 (Xu(0,0) = 3 (b_10 - b_00), Xuv(0,0) = 9 (b_11 - b_10 -
 /// b_01 + b_00), ...) solved for the 16 points.
 BezierSurface to_bezier(const HermitePatch& patch);
 
-/// Hermite along u, Lagrange along v (seed 000 §1.7, "Hermite–Lagrange tensor
+/// Hermite along u, Lagrange along v (ch. 1 §1.7, "Hermite–Lagrange tensor
 /// product": the derivatives are known in one direction only). For each node
 /// v_j the values and u-derivatives at u = 0 and u = 1 are given:
 ///   X(u, v) = sum_j [H0(u) p0_j + H0bar(u) du0_j + H1(u) p1_j + H1bar(u) du1_j] L_j(v),
@@ -284,10 +284,10 @@ std::vector<std::vector<Vec3>> surface_derivs(const BsplineSurface& surface, dou
 
 /// S, Su, Sv and the twist Suv at (u, v) (surface_derivs with d = 2).
 SurfacePartials surface_partials(const BsplineSurface& surface, double u, double v);
-/// The twist vector d^2S / (du dv) (seed 000 §1.7, "The twist vector").
+/// The twist vector d^2S / (du dv) (ch. 1 §1.7, "The twist vector").
 Vec3 surface_twist(const BsplineSurface& surface, double u, double v);
 
-/// The unit normal N = (Su x Sv) / |Su x Sv| (seed 000 §1.7).
+/// The unit normal N = (Su x Sv) / |Su x Sv| (ch. 1 §1.7).
 /// Fallback where Su x Sv vanishes (|Su x Sv| <= kDegenerateNormal *
 /// max(|Su|, |Sv|)^2: a pole such as the tip of a revolved profile, a
 /// collapsed edge, or Su parallel to Sv):
@@ -301,7 +301,7 @@ Vec3 surface_twist(const BsplineSurface& surface, double u, double v);
 ///      there), the zero vector.
 Vec3 surface_normal(const BsplineSurface& surface, double u, double v);
 
-/// The iso-parameter curves (seed 000 §1.7), exactly: v -> S(u0, v) has
+/// The iso-parameter curves (ch. 1 §1.7), exactly: v -> S(u0, v) has
 /// degree q, knots V and the control points Q_j = sum_i N_i,p(u0) P_ij
 /// (rational: in homogeneous space, weight sum_i N_i,p(u0) w_ij); u -> S(u, v0)
 /// has degree p, knots U and R_i = sum_j N_j,q(v0) P_ij.

@@ -32,7 +32,7 @@ double lattice_param(double a, double b, Index k, Index n) {
   return k == n ? b : a + (b - a) * (static_cast<double>(k) / static_cast<double>(n));
 }
 
-/// Recursive bisection of the lattice interval [k0, k1] (seed 004: subdivide
+/// Recursive bisection of the lattice interval [k0, k1] (notes "Higher Order Surfaces": subdivide
 /// until flat enough or small enough). Appends the right end of every accepted
 /// interval, so a caller that starts `out` with k0 gets all breakpoints.
 template <class NeedsSplit>
@@ -503,7 +503,7 @@ class PatchTessellator {
     return n;
   }
 
-  /// Seed 004's "sufficiently planar" test, measured as the tolerance is
+  /// the "sufficiently planar" test of the notes "Higher Order Surfaces", measured as the tolerance is
   /// defined: S against the cell's two triangles at 11 points.
   bool cell_is_flat(const Node& c) {
     const Index I = 4 * c.i0, J = 4 * c.j0, S = 4 * c.size;
@@ -928,7 +928,7 @@ class PatchTessellator {
 
   /// Splits each trim edge until its image on the surface is within the
   /// tolerance (parametric error): GLU leaves gluPwlCurve edges alone and fans
-  /// slivers across the trimmed region (DESIGN.md); this is the fix.
+  /// slivers across the trimmed region (docs/glu.md); this is the fix.
   TrimPolygon refine_trim_edges(const TrimPolygon& poly, std::vector<char>& refined) {
     TrimPolygon out;
     refined.clear();

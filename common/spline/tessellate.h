@@ -1,7 +1,7 @@
 // common/spline/tessellate.h — from curves and surfaces to line strips and
 // triangle meshes, to a tolerance.
 //
-// Seed 004 ("Rendering Bezier Patches"): split a patch until it is
+// Notes "Higher Order Surfaces" ("Rendering Bezier Patches"): split a patch until it is
 // "sufficiently planar — make a plane out of 3 vertices and measure how far the
 // others are from the plane", or "sufficiently small"; and beware of "patch
 // cracking: when one patch is subdivided independently of another, cracking
@@ -145,12 +145,12 @@ struct TessellationOptions {
 ///     flattened on the surface (the 3D curve S(C(t)), chordal error); every
 ///     trim edge refined until its image is within the tolerance (GLU does not
 ///     refine gluPwlCurve edges and so fans slivers across the region:
-///     DESIGN.md). Stretches of a loop that run along the domain edge only
+///     docs/glu.md). Stretches of a loop that run along the domain edge only
 ///     repeat it (the Red Book's outer square) and are moved outside.
 ///  2. Quadtree over the domain: a cell is split while the surface deviates
 ///     from the cell's two triangles by more than kFlattenSafety x tolerance at
 ///     11 samples (centre, edge midpoints, the two barycentres, quarter points)
-///     — seed 004's "sufficiently planar" test, measured the way the
+///     — the "sufficiently planar" test of the notes "Higher Order Surfaces", measured the way the
 ///     tolerance is defined — or while it holds more than
 ///     kMaxTrimPointsPerLeaf trim points. Then restricted (neighbouring leaves
 ///     differ by at most one level; Von Herzen & Barr 1987); a leaf with a
@@ -238,7 +238,7 @@ double mesh_area(const Mesh& mesh);
 /// its outline here.
 std::vector<std::array<int, 2>> boundary_edges(const Mesh& mesh);
 
-/// Iso-curves (seed 000 §1.7, "Iso-curves": the height curves f = const of a
+/// Iso-curves (ch. 1 §1.7, "Iso-curves": the height curves f = const of a
 /// scalar field) on a triangle mesh: where the height h(p) = dot(p, direction),
 /// linear on each triangle, equals level. Each triangle the level crosses
 /// gives one segment between the two edge points where h = level (linear

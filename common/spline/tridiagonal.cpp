@@ -43,7 +43,7 @@ void check_system(const std::string& what, const std::vector<double>& lower, con
        " (the matrix needs pivoting or is singular)");
 }
 
-/// Thomas algorithm (Gaussian elimination on a tridiagonal matrix; seed 000
+/// Thomas algorithm (Gaussian elimination on a tridiagonal matrix; ch. 1
 /// §1.6 calls it "the LU decomposition for tridiagonal matrices").
 /// Forward sweep: eliminate lower[i] with row i-1, which leaves row i as
 ///     x[i] + upper_[i] x[i+1] = rhs_[i],

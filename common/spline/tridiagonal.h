@@ -2,7 +2,7 @@
 // spline interpolation.
 //
 // The natural and clamped cubic splines lead to a tridiagonal system, the
-// periodic spline to a cyclic tridiagonal one (seed 000 §1.6, "the LU
+// periodic spline to a cyclic tridiagonal one (ch. 1 §1.6, "the LU
 // decomposition for tridiagonal matrices is appropriate due to its complexity
 // of O(n)"). Row i of an N x N system reads
 //
@@ -14,10 +14,10 @@
 //
 // The right-hand side is a number per row, or a Vec3 per row: a parametric
 // curve solves its x, y and z components with one matrix at once
-// (seed 000 §1.6, "compute the spline curves for each component individually").
+// (ch. 1 §1.6, "compute the spline curves for each component individually").
 //
 // Neither solver pivots. That is safe for the spline matrices, which are
-// strictly diagonally dominant (seed 000 §1.6, comment 2). Any other matrix
+// strictly diagonally dominant (ch. 1 §1.6, comment 2). Any other matrix
 // may hit a zero pivot; the solvers then throw std::invalid_argument naming
 // the row, e.g. "solve_tridiagonal: zero pivot 0 in row 0 (the matrix needs
 // pivoting or is singular)".

@@ -1,7 +1,7 @@
 // common/spline/trim.h — trim loops in the (u, v) domain of a surface:
 // flattening to polygons, validation, orientation, and the inside test.
 //
-// GLU's rule (DESIGN.md, "GLU NURBS"; the Red Book's trim example): the trimmed
+// GLU's rule (docs/glu.md, "Trimming keeps the left side"; the Red Book's trim example): the trimmed
 // surface keeps what lies to the LEFT of each trim curve. So an outer loop runs
 // counter-clockwise, a hole inside it clockwise, an island inside the hole
 // counter-clockwise again; every loop is closed and no two curves cross.

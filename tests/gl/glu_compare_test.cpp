@@ -28,9 +28,9 @@ GluNurbs glu_with_steps(float u_step) {
   return GluNurbs(p);
 }
 
-/// Seed 003's cases A–D: a cubic on 8 points, knot 4 of multiplicity mult
+/// the cases A–D of the notes "B-Spline Polynomials": a cubic on 8 points, knot 4 of multiplicity mult
 /// (as tests/spline/bspline_test.cpp builds them).
-BsplineCurve seed_case(int mult) {
+BsplineCurve lecture_case(int mult) {
   BsplineCurve c;
   c.p = 3;
   c.dimension = 2;
@@ -41,10 +41,10 @@ BsplineCurve seed_case(int mult) {
   return c;
 }
 
-TEST(CompareWithGlu, SeedCasesAgreeToFloatPrecision) {
+TEST(CompareWithGlu, LectureCasesAgreeToFloatPrecision) {
   for (int mult = 1; mult <= 4; ++mult) {
     GluNurbs glu = glu_with_steps(8);
-    const GluCurveDifference d = compare_with_glu(glu, seed_case(mult), "seed case");
+    const GluCurveDifference d = compare_with_glu(glu, lecture_case(mult), "lecture case");
     ASSERT_TRUE(d.ok()) << "mult " << mult;
     // GLU_DOMAIN_DISTANCE: one strip per non-empty span (measured), and
     // the domain [3, 8 - (mult - 1)] has 5 - (mult - 1) of them.
@@ -62,7 +62,7 @@ TEST(CompareWithGlu, SeedCasesAgreeToFloatPrecision) {
 // be |P4 - P3| = |(2, 1)| = 2.24 away; compared with both sides it agrees.
 TEST(CompareWithGlu, AtAGapBothOneSidedLimitsAreTried) {
   GluNurbs glu = glu_with_steps(8);
-  const BsplineCurve c = seed_case(4);
+  const BsplineCurve c = lecture_case(4);
   const GluCurveDifference d = compare_with_glu(glu, c, "case D");
   ASSERT_TRUE(d.ok());
   int at_knot = 0;
@@ -94,7 +94,7 @@ TEST(CompareWithGlu, RandomCurvesAgreeWithinTheStatedSpacings) {
 // Negative checks: the measurement sees a wrong curve.
 TEST(CompareWithGlu, AMovedControlPointIsSeen) {
   GluNurbs glu = glu_with_steps(8);
-  const BsplineCurve c = seed_case(1);
+  const BsplineCurve c = lecture_case(1);
   BsplineCurve moved = c;
   moved.P[4].y += 0.08;  // 1 % of the size 8
   const GluCurveDifference d = compare_with_glu(glu, c, moved, "moved point");
@@ -123,9 +123,9 @@ TEST(CompareWithGlu, NotPremultipliedWeightsAreSeen) {
 
 TEST(CompareWithGlu, GluErrorsComeBackAndNothingIsMeasured) {
   GluNurbs glu = glu_with_steps(8);
-  BsplineCurve c = seed_case(1);
+  BsplineCurve c = lecture_case(1);
   c.U.push_back(13);  // one knot too many: the wrapper refuses (GLU would read past P)
-  const GluCurveDifference d = compare_with_glu(glu, c, seed_case(1), "too many knots");
+  const GluCurveDifference d = compare_with_glu(glu, c, lecture_case(1), "too many knots");
   (void)gllab::take_frame_errors();
   EXPECT_FALSE(d.ok());
   EXPECT_TRUE(d.u.empty());

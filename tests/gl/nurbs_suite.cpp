@@ -142,9 +142,9 @@ std::vector<CurveCase> curve_suite() {
   s.push_back({"nurbs_circle_2d", "the exact circle (The NURBS Book Ex. 7.2): rational, degree 2, 9 points, 2D",
                spline::circle({1, 2, 0}, 1.5)});
   {
-    // The seeds' conic by r (seed 000 §1.6): r = 0.3, an ellipse arc, in a tilted plane.
+    // The lecture's conic by r (ch. 1 §1.6): r = 0.3, an ellipse arc, in a tilted plane.
     BsplineCurve conic = spline::conic_arc({0, 0, 0}, {2, 3, 1}, {4, 0, 2}, 0.3);
-    s.push_back({"rational_conic_3d", "rational quadratic conic arc, r = 0.3 (ellipse, seed 000 §1.6), 3D", conic});
+    s.push_back({"rational_conic_3d", "rational quadratic conic arc, r = 0.3 (ellipse, ch. 1 §1.6), 3D", conic});
   }
   s.push_back({"rational_cubic_unclamped_3d", "degree 3, unclamped uniform knots, weights 0.5 to 3, 3D",
                curve_of(3, spline::uniform_knots(6, 3),
@@ -207,7 +207,7 @@ std::vector<SurfaceCase> surface_suite() {
   }
   {
     // A tube: clamped cubic along u (the axis), periodic cubic along v (8
-    // points around, the first 3 repeated: seed 003's closed B-spline).
+    // points around, the first 3 repeated: the closed B-spline of the notes "B-Spline Polynomials").
     std::vector<std::vector<Vec3>> rows;
     const int around = 8;
     for (int i = 0; i < 5; ++i) {

@@ -24,7 +24,7 @@ TEST(PlotCeiling, RoundsUpToOneTwoOrFiveTimesAPowerOfTen) {
   EXPECT_EQ(gllab::plot_ceiling(std::nan("")), 1.0);
 }
 
-// Seed 000's knot insertion example, before and after inserting t = 0.5.
+// Ch. 1's knot insertion example, before and after inserting t = 0.5.
 TEST(KnotVectorText, EachKnotOnceWithItsMultiplicity) {
   EXPECT_EQ(gllab::knot_vector_text({0, 0, 0, 0, .2, .4, .6, .8, 1, 1, 1, 1}), " 0x4 0.2 0.4 0.6 0.8 1x4");
   EXPECT_EQ(gllab::knot_vector_text({0, 0, 0, 0, .2, .4, .5, .6, .8, 1, 1, 1, 1}), " 0x4 0.2 0.4 0.5 0.6 0.8 1x4");

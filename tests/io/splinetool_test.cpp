@@ -1,6 +1,6 @@
 // tests/io/splinetool_test.cpp — runs the built splinetool (tools/splinetool.cpp)
 // as a process: exit codes, one-line errors, and values checked against
-// references that do not come from the tool (the seeds, The NURBS Book, and
+// references that do not come from the tool (the lecture, The NURBS Book, and
 // properties such as "knot insertion does not change the curve").
 #include <gtest/gtest.h>
 
@@ -39,8 +39,8 @@ constexpr int kFailed = 1;    // an output file could not be written
 constexpr double kRoundOff = 1e-12;
 /// Interpolants hit their points up to the error of the linear solves.
 constexpr double kInterpolation = 1e-9;
-/// The seed prints the de Casteljau levels rounded to two decimals.
-constexpr double kSeedRounding = 0.01;
+/// The lecture prints the de Casteljau levels rounded to two decimals.
+constexpr double kLectureRounding = 0.01;
 constexpr double kPi = 3.141592653589793;
 
 const std::string kTool = GLLAB_SPLINETOOL;
@@ -244,14 +244,14 @@ TEST(Eval, NurbsCirclePassesTheAxisPointsAtQuarterParameters) {
   for (std::size_t i = 0; i < 5; ++i) expect_near(vec(out["points"][i]), expected[i], kRoundOff, "axis point");
 }
 
-TEST(Eval, SeedDeCasteljauExampleAtPointSix) {
-  // Seed 000 §1.6, "Example (de Casteljau algorithm)": b = (0,0), (2,4.5),
+TEST(Eval, LectureDeCasteljauExampleAtPointSix) {
+  // Ch. 1 §1.6, "Example (de Casteljau algorithm)": b = (0,0), (2,4.5),
   // (8.5,6.5), (11,2) gives X(0.6) = (6.63, 4.54) with levels rounded to two
   // decimals. The Bernstein form without rounding: (6.624, 4.536).
   const Json out = run_ok({"eval", kBezier, "--at", "0.6", "--derivatives", "1"});
   const Vec3 X = vec(out["points"][0]);
-  EXPECT_NEAR(X.x, 6.63, kSeedRounding);
-  EXPECT_NEAR(X.y, 4.54, kSeedRounding);
+  EXPECT_NEAR(X.x, 6.63, kLectureRounding);
+  EXPECT_NEAR(X.y, 4.54, kLectureRounding);
   expect_near(X, {6.624, 4.536, 0}, kRoundOff, "Bernstein form");
   // X'(t) = 3 [(1-t)^2 (b1 - b0) + 2 (1-t) t (b2 - b1) + t^2 (b3 - b2)].
   const double t = 0.6;
@@ -421,8 +421,8 @@ TEST(Interpolate, EveryMethodPassesThroughThePointsAtTheirParameters) {
     }
 }
 
-TEST(Interpolate, UniformAndChordalParametersAreTheSeedsDefinitions) {
-  // Seed 000 §1.6: uniform t_i = i; chordal t_{i+1} - t_i = |P_{i+1} - P_i|.
+TEST(Interpolate, UniformAndChordalParametersAreTheLecturesDefinitions) {
+  // Ch. 1 §1.6: uniform t_i = i; chordal t_{i+1} - t_i = |P_{i+1} - P_i|.
   ScratchDir dir("params");
   const PointsFile input = read_points(kPoints);
   const Interpolated uniform = interpolate(kPoints, "natural", "uniform", dir);
@@ -465,7 +465,7 @@ TEST(Interpolate, CubicSplinesAreC2CubicBsplinesWithTheEndConditions) {
 }
 
 TEST(Interpolate, LagrangeNewtonAndBezierGiveTheSamePolynomial) {
-  // The interpolating polynomial of degree n is unique (seed 000 §1.6, Theorem 1).
+  // The interpolating polynomial of degree n is unique (ch. 1 §1.6, Theorem 1).
   ScratchDir dir("polynomial");
   const Interpolated lagrange = interpolate(kPoints, "lagrange", "centripetal", dir);
   const Interpolated newton = interpolate(kPoints, "newton", "centripetal", dir);

@@ -1,7 +1,7 @@
 // tests/spline/bezier_test.cpp — common/spline/bezier.{h,cpp}.
 //
-// Expected values come from the worked examples of seed 000 §1.6 (de Casteljau
-// at t = 0.6, Bézier interpolation), the formulas printed in seeds 000/001/004
+// Expected values come from the worked examples of ch. 1 §1.6 (de Casteljau
+// at t = 0.6, Bézier interpolation), the formulas printed in ch. 1 and the notes "Geometric Modeling" and "Higher Order Surfaces"
 // (Bernstein cubics, the Bézier matrix, end-point derivatives, midpoint
 // subdivision), or from properties checked over many random curves (fixed
 // seeds): partition of unity, convex hull, endpoint interpolation, affine
@@ -30,18 +30,18 @@ namespace {
 // Relative to the size of the data: max(1, max |P_i|), or the size of the terms
 // a formula sums where a test says so.
 constexpr double kExact = 1e-12;  // "the same number" up to round-off
-// The seed solves its interpolation example from a 2x2 system whose
+// The lecture solves its interpolation example from a 2x2 system whose
 // coefficients it rounded to two decimals. Solving that printed system exactly
 // already moves b2.x by 0.095 from the exact solution (the system amplifies a
-// 0.005 rounding about 20 times), so the seed's printed b1, b2 can only be
+// 0.005 rounding about 20 times), so the lecture's printed b1, b2 can only be
 // expected within 0.1. The exact solution is checked at kExact separately.
-constexpr double kSeedTwoDecimalSystem = 0.1;
+constexpr double kLectureTwoDecimalSystem = 0.1;
 
-// Round-off allowances for the seeds' small examples: kExact times the size of
-// the numbers involved (the seed cubic's coordinates reach 11, its derivatives
+// Round-off allowances for the lecture's small examples: kExact times the size of
+// the numbers involved (the lecture cubic's coordinates reach 11, its derivatives
 // |X'''| = 51; the interpolation example's points reach 6.8).
-constexpr double kSeedPointTol = kExact * 11;
-constexpr double kSeedDerivativeTol = kExact * 100;
+constexpr double kLecturePointTol = kExact * 11;
+constexpr double kLectureDerivativeTol = kExact * 100;
 
 constexpr int kRandomCases = 200;  // random curves per property test
 constexpr int kSamples = 101;      // parameters per curve comparison
@@ -91,9 +91,9 @@ double binomial(int n, int k) {
   return r;
 }
 
-/// The seed's example curve: control polygon (0,0), (2,4.5), (8.5,6.5), (11,2)
-/// (seed 000 §1.6, "Example (de Casteljau algorithm)").
-BezierCurve seed_cubic(double a = 0, double b = 1) {
+/// The lecture's example curve: control polygon (0,0), (2,4.5), (8.5,6.5), (11,2)
+/// (ch. 1 §1.6, "Example (de Casteljau algorithm)").
+BezierCurve lecture_cubic(double a = 0, double b = 1) {
   BezierCurve c;
   c.P = {{0, 0, 0}, {2, 4.5, 0}, {8.5, 6.5, 0}, {11, 2, 0}};
   c.a = a;
@@ -102,39 +102,39 @@ BezierCurve seed_cubic(double a = 0, double b = 1) {
   return c;
 }
 
-// ---- de Casteljau: the seed's worked example -------------------------------------
+// ---- de Casteljau: the lecture's worked example -------------------------------------
 
-TEST(DeCasteljau, SeedExampleSchemeAtPoint6) {
-  // seed 000 §1.6, "Example (de Casteljau algorithm)", t = 0.6 (splitting
-  // ratio 0.4 : 0.6). Level 1 and 2 are printed exactly; the seed prints the
+TEST(DeCasteljau, LectureExampleSchemeAtPoint6) {
+  // ch. 1 §1.6, "Example (de Casteljau algorithm)", t = 0.6 (splitting
+  // ratio 0.4 : 0.6). Level 1 and 2 are printed exactly; the lecture prints the
   // point rounded to two decimals as (6.63, 4.54). Exactly it is
   // 0.4 (4.02, 4.5) + 0.6 (8.36, 4.56) = (6.624, 4.536) = (828/125, 567/125):
-  // 4.536 rounds to 4.54, but 6.624 rounds to 6.62 (the seed's 6.63 is a slip).
-  const DeCasteljau d = de_casteljau(seed_cubic(), 0.6);
+  // 4.536 rounds to 4.54, but 6.624 rounds to 6.62 (the lecture's 6.63 is a slip).
+  const DeCasteljau d = de_casteljau(lecture_cubic(), 0.6);
   ASSERT_EQ(d.levels.size(), 4u);
-  const double tol = kSeedPointTol;
-  const std::vector<std::vector<Vec3>> seed = {
+  const double tol = kLecturePointTol;
+  const std::vector<std::vector<Vec3>> printed = {
       {{0, 0, 0}, {2, 4.5, 0}, {8.5, 6.5, 0}, {11, 2, 0}},
       {{1.2, 2.7, 0}, {5.9, 5.7, 0}, {10, 3.8, 0}},
       {{4.02, 4.5, 0}, {8.36, 4.56, 0}},
       {{828.0 / 125, 567.0 / 125, 0}}};
-  for (std::size_t j = 0; j < seed.size(); ++j) {
-    ASSERT_EQ(d.levels[j].size(), seed[j].size()) << j;
-    for (std::size_t i = 0; i < seed[j].size(); ++i) expect_near_vec(d.levels[j][i], seed[j][i], tol);
+  for (std::size_t j = 0; j < printed.size(); ++j) {
+    ASSERT_EQ(d.levels[j].size(), printed[j].size()) << j;
+    for (std::size_t i = 0; i < printed[j].size(); ++i) expect_near_vec(d.levels[j][i], printed[j][i], tol);
   }
   expect_near_vec(d.point, {6.624, 4.536, 0}, tol);
   EXPECT_EQ(d.point, d.levels[3][0]);
   EXPECT_EQ(d.s, 0.6);
-  expect_near_vec(bezier_point(seed_cubic(), 0.6), {6.624, 4.536, 0}, tol);
+  expect_near_vec(bezier_point(lecture_cubic(), 0.6), {6.624, 4.536, 0}, tol);
 }
 
-TEST(DeCasteljau, SeedExampleDerivativesAtPoint6) {
-  // seed 000 §1.6, "Example (continued)": X'(0.6) = 3 (b_3^2 - b_2^2) = (13.02, 0.18),
-  // X''(0.6) = 6 (b_3^1 - 2 b_2^1 + b_1^1) = (-3.6, -29.4), both exact in the seed.
+TEST(DeCasteljau, LectureExampleDerivativesAtPoint6) {
+  // ch. 1 §1.6, "Example (continued)": X'(0.6) = 3 (b_3^2 - b_2^2) = (13.02, 0.18),
+  // X''(0.6) = 6 (b_3^1 - 2 b_2^1 + b_1^1) = (-3.6, -29.4), both exact in the lecture.
   // X''' of a cubic is constant: 6 (b3 - 3 b2 + 3 b1 - b0) = (-51, -24)
-  // (seed 000 §1.6 "Derivatives at end points", by hand).
-  const BezierCurve c = seed_cubic();
-  const double tol = kSeedDerivativeTol;
+  // (ch. 1 §1.6 "Derivatives at end points", by hand).
+  const BezierCurve c = lecture_cubic();
+  const double tol = kLectureDerivativeTol;
   const std::vector<Vec3> ders = bezier_derivatives(c, 0.6, 3);
   ASSERT_EQ(ders.size(), 4u);
   expect_near_vec(ders[0], {6.624, 4.536, 0}, tol);
@@ -147,12 +147,12 @@ TEST(DeCasteljau, SeedExampleDerivativesAtPoint6) {
   expect_near_vec(bezier_derivative_at(c, 0.6, 3), {-51, -24, 0}, tol);
 }
 
-TEST(DeCasteljau, SeedExampleOnIntervalTwoToSeven) {
-  // seed 000 §1.6 "Generalization": on [a, b] = [2, 7] the point at
+TEST(DeCasteljau, LectureExampleOnIntervalTwoToSeven) {
+  // ch. 1 §1.6 "Generalization": on [a, b] = [2, 7] the point at
   // t = 2 + 0.6 * 5 = 5 is the same, "the p-th derivative gets scaled by
   // 1/(b-a)^p": X' / 5 and X'' / 25.
-  const BezierCurve c = seed_cubic(2, 7);
-  const double tol = kSeedDerivativeTol;
+  const BezierCurve c = lecture_cubic(2, 7);
+  const double tol = kLectureDerivativeTol;
   const std::vector<Vec3> ders = bezier_derivatives(c, 5.0, 2);
   expect_near_vec(ders[0], {6.624, 4.536, 0}, tol);
   expect_near_vec(ders[1], Vec3{13.02, 0.18, 0} / 5, tol);
@@ -163,7 +163,7 @@ TEST(DeCasteljau, SeedExampleOnIntervalTwoToSeven) {
 
 TEST(DeCasteljau, SchemeHasEveryIntermediatePolygon) {
   // levels[j] has n + 1 - j points, and each is the convex combination of two
-  // points of the level above (seed 000 §1.6 recursion).
+  // points of the level above (ch. 1 §1.6 recursion).
   std::mt19937 rng(101);
   for (int c = 0; c < kRandomCases; ++c) {
     const BezierCurve curve = random_curve(rng, c);
@@ -181,9 +181,9 @@ TEST(DeCasteljau, SchemeHasEveryIntermediatePolygon) {
 
 // ---- Bernstein -----------------------------------------------------------------------
 
-TEST(Bernstein, SeedCubicClosedForms) {
-  // seed 004 "Cubic case": B03 = (1-u)^3, B13 = 3u(1-u)^2, B23 = 3u^2(1-u), B33 = u^3;
-  // seed 001 "The first three Bernstein bases" for degrees 0..2.
+TEST(Bernstein, LectureCubicClosedForms) {
+  // notes "Higher Order Surfaces", "Cubic case": B03 = (1-u)^3, B13 = 3u(1-u)^2, B23 = 3u^2(1-u), B33 = u^3;
+  // notes "Geometric Modeling", "The first three Bernstein bases" for degrees 0..2.
   for (int k = 0; k < kSamples; ++k) {
     const double u = sample(0, 1, k), v = 1 - u;
     const std::vector<double> B3 = bernstein_all(3, u);
@@ -201,7 +201,7 @@ TEST(Bernstein, SeedCubicClosedForms) {
 }
 
 TEST(Bernstein, PartitionOfUnityNonNegativeAndSymmetric) {
-  // seed 000 §1.6 property 6: B_i^n(t) = B_{n-i}^n(1-t), B_i^n >= 0 on [0, 1],
+  // ch. 1 §1.6 property 6: B_i^n(t) = B_{n-i}^n(1-t), B_i^n >= 0 on [0, 1],
   // sum B_i^n = 1; and the definition C(n, i) t^i (1-t)^(n-i) (property 5).
   for (int n = 0; n <= 30; ++n) {
     for (int k = 0; k < kSamples; ++k) {
@@ -224,7 +224,7 @@ TEST(Bernstein, PartitionOfUnityNonNegativeAndSymmetric) {
 }
 
 TEST(Bernstein, MaximumAtIOverN) {
-  // seed 000 §1.6 property 8: max(B_i^n) = B_i^n(i/n).
+  // ch. 1 §1.6 property 8: max(B_i^n) = B_i^n(i/n).
   for (int n = 1; n <= 12; ++n)
     for (int i = 0; i <= n; ++i) {
       const double peak = bernstein(i, n, static_cast<double>(i) / n);
@@ -233,7 +233,7 @@ TEST(Bernstein, MaximumAtIOverN) {
 }
 
 TEST(Bernstein, GeneralIntervalUsesTheLocalParameter) {
-  // seed 000 §1.6 "Generalization": B_i^n((t - a) / (b - a)) =
+  // ch. 1 §1.6 "Generalization": B_i^n((t - a) / (b - a)) =
   // C(n, i) (t - a)^i (b - t)^(n - i) / (b - a)^n.
   const double a = -1.5, b = 2.5;
   for (int n = 0; n <= 8; ++n)
@@ -241,30 +241,30 @@ TEST(Bernstein, GeneralIntervalUsesTheLocalParameter) {
       const double t = sample(a, b, k);
       const std::vector<double> B = bernstein_all(n, t, a, b);
       for (int i = 0; i <= n; ++i) {
-        const double seed = binomial(n, i) * std::pow(t - a, i) * std::pow(b - t, n - i) / std::pow(b - a, n);
-        EXPECT_NEAR(B[static_cast<std::size_t>(i)], seed, kExact);
-        EXPECT_NEAR(bernstein(i, n, t, a, b), seed, kExact);
+        const double printed = binomial(n, i) * std::pow(t - a, i) * std::pow(b - t, n - i) / std::pow(b - a, n);
+        EXPECT_NEAR(B[static_cast<std::size_t>(i)], printed, kExact);
+        EXPECT_NEAR(bernstein(i, n, t, a, b), printed, kExact);
       }
     }
 }
 
 TEST(Bernstein, IndexOutsideZeroToNIsZero) {
-  // seed 000 §1.6 property 11: "B_{-1}^{n-1}, B_n^{n-1} := 0".
+  // ch. 1 §1.6 property 11: "B_{-1}^{n-1}, B_n^{n-1} := 0".
   EXPECT_EQ(bernstein(-1, 3, 0.5), 0.0);
   EXPECT_EQ(bernstein(4, 3, 0.5), 0.0);
 }
 
 // ---- matrix and monomial form ------------------------------------------------------
 
-TEST(BezierMatrix, SeedCubicMatrix) {
-  // seed 000 §1.6 "basis transformation (to monomials)" and seed 004 "Matrix Form".
-  const std::vector<std::vector<double>> seed = {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}};
-  EXPECT_EQ(bezier_matrix(3), seed);
+TEST(BezierMatrix, LectureCubicMatrix) {
+  // ch. 1 §1.6 "basis transformation (to monomials)" and notes "Higher Order Surfaces", "Matrix Form".
+  const std::vector<std::vector<double>> printed = {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}};
+  EXPECT_EQ(bezier_matrix(3), printed);
   EXPECT_EQ(bezier_matrix(0), (std::vector<std::vector<double>>{{1}}));
 }
 
 TEST(BezierMatrix, PowerRowTimesMatrixGivesBernstein) {
-  // seed 004: [B_0(u) ... B_n(u)] = U M with U = (u^n ... u 1).
+  // notes "Higher Order Surfaces": [B_0(u) ... B_n(u)] = U M with U = (u^n ... u 1).
   for (int n = 0; n <= 10; ++n) {
     const auto M = bezier_matrix(n);
     for (int k = 0; k < kSamples; ++k) {
@@ -321,23 +321,23 @@ TEST(BezierMonomial, RoundTripReturnsTheControlPoints) {
   }
 }
 
-TEST(BezierMonomial, SeedCubicExpansion) {
-  // seed 000 §1.6: X(t) = b0 (-t^3 + 3t^2 - 3t + 1) + b1 (3t^3 - 6t^2 + 3t)
-  // + b2 (-3t^3 + 3t^2) + b3 t^3. For the seed's cubic: c0 = b0 = (0, 0),
+TEST(BezierMonomial, LectureCubicExpansion) {
+  // ch. 1 §1.6: X(t) = b0 (-t^3 + 3t^2 - 3t + 1) + b1 (3t^3 - 6t^2 + 3t)
+  // + b2 (-3t^3 + 3t^2) + b3 t^3. For the lecture's cubic: c0 = b0 = (0, 0),
   // c1 = 3 (b1 - b0) = (6, 13.5), c2 = 3 b0 - 6 b1 + 3 b2 = (13.5, -7.5),
   // c3 = -b0 + 3 b1 - 3 b2 + b3 = (-8.5, -4)   (by hand; c0 + c1 + c2 + c3 = b3 = (11, 2)).
-  const std::vector<Vec3> c = monomial_coefficients(seed_cubic());
+  const std::vector<Vec3> c = monomial_coefficients(lecture_cubic());
   ASSERT_EQ(c.size(), 4u);
-  expect_near_vec(c[0], {0, 0, 0}, kSeedPointTol);
-  expect_near_vec(c[1], {6, 13.5, 0}, kSeedPointTol);
-  expect_near_vec(c[2], {13.5, -7.5, 0}, kSeedPointTol);
-  expect_near_vec(c[3], {-8.5, -4, 0}, kSeedPointTol);
+  expect_near_vec(c[0], {0, 0, 0}, kLecturePointTol);
+  expect_near_vec(c[1], {6, 13.5, 0}, kLecturePointTol);
+  expect_near_vec(c[2], {13.5, -7.5, 0}, kLecturePointTol);
+  expect_near_vec(c[3], {-8.5, -4, 0}, kLecturePointTol);
 }
 
 // ---- properties over random curves ---------------------------------------------------
 
 TEST(BezierProperty, EndpointInterpolation) {
-  // seed 000 §1.6 property 3: X(a) = b_0, X(b) = b_n, exactly (de Casteljau
+  // ch. 1 §1.6 property 3: X(a) = b_0, X(b) = b_n, exactly (de Casteljau
   // at s = 0 or 1 only copies points).
   std::mt19937 rng(131);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -348,7 +348,7 @@ TEST(BezierProperty, EndpointInterpolation) {
 }
 
 TEST(BezierProperty, ConvexHull) {
-  // seed 000 §1.6 property 1: X(t) lies in the convex hull of the b_i. A point
+  // ch. 1 §1.6 property 1: X(t) lies in the convex hull of the b_i. A point
   // p is in the hull iff for every direction d, min d.b_i <= d.p <= max d.b_i;
   // checked for 24 random directions.
   std::mt19937 rng(141);
@@ -373,7 +373,7 @@ TEST(BezierProperty, ConvexHull) {
 }
 
 TEST(BezierProperty, AffineInvariance) {
-  // seed 000 §1.6 property 4: phi(X(t)) = Y(t) for phi(p) = A p + v, Y the
+  // ch. 1 §1.6 property 4: phi(X(t)) = Y(t) for phi(p) = A p + v, Y the
   // curve of the points phi(b_i).
   std::mt19937 rng(151);
   std::uniform_real_distribution<double> u(-2, 2);
@@ -399,7 +399,7 @@ TEST(BezierProperty, AffineInvariance) {
 }
 
 TEST(BezierProperty, SymmetryUnderReversal) {
-  // seed 000 §1.6 property 7: reversing the points gives Y(t) = X(1 - t); on
+  // ch. 1 §1.6 property 7: reversing the points gives Y(t) = X(1 - t); on
   // [a, b], Y(t) = X(a + b - t).
   std::mt19937 rng(161);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -415,7 +415,7 @@ TEST(BezierProperty, SymmetryUnderReversal) {
 }
 
 TEST(BezierProperty, CollinearPointsGiveASegment) {
-  // seed 001 "Linear precision": collinear b_i -> the curve is a line segment.
+  // notes "Geometric Modeling", "Linear precision": collinear b_i -> the curve is a line segment.
   std::mt19937 rng(171);
   std::uniform_real_distribution<double> lambda(-1, 2);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -432,7 +432,7 @@ TEST(BezierProperty, CollinearPointsGiveASegment) {
 // ---- subdivision ---------------------------------------------------------------------
 
 TEST(BezierSubdivide, PiecesMatchTheCurve) {
-  // seed 000 §1.6 property 10: left(u) = X(u) on [a, t], right(u) = X(u) on
+  // ch. 1 §1.6 property 10: left(u) = X(u) on [a, t], right(u) = X(u) on
   // [t, b], at kSamples parameters each, relative kExact.
   std::mt19937 rng(181);
   std::uniform_real_distribution<double> where(0.02, 0.98);
@@ -456,10 +456,10 @@ TEST(BezierSubdivide, PiecesMatchTheCurve) {
   }
 }
 
-TEST(BezierSubdivide, SeedExampleAtPoint6TakesTheSchemeEdges) {
-  // seed 000 §1.6: the new points are b_0^i and b_i^(n-i) of the t = 0.6 scheme above.
-  const BezierSplit split = subdivide(seed_cubic(), 0.6);
-  const double tol = kSeedPointTol;
+TEST(BezierSubdivide, LectureExampleAtPoint6TakesTheSchemeEdges) {
+  // ch. 1 §1.6: the new points are b_0^i and b_i^(n-i) of the t = 0.6 scheme above.
+  const BezierSplit split = subdivide(lecture_cubic(), 0.6);
+  const double tol = kLecturePointTol;
   const std::vector<Vec3> left = {{0, 0, 0}, {1.2, 2.7, 0}, {4.02, 4.5, 0}, {6.624, 4.536, 0}};
   const std::vector<Vec3> right = {{6.624, 4.536, 0}, {8.36, 4.56, 0}, {10, 3.8, 0}, {11, 2, 0}};
   for (std::size_t i = 0; i < 4; ++i) {
@@ -469,8 +469,8 @@ TEST(BezierSubdivide, SeedExampleAtPoint6TakesTheSchemeEdges) {
   EXPECT_EQ(split.left.dimension, 2);
 }
 
-TEST(BezierSubdivide, SeedMidpointFormulasForACubic) {
-  // seed 004 "Midpoint subdivision (u = 0.5)": q0 = p0, q1 = (p0 + p1)/2,
+TEST(BezierSubdivide, LectureMidpointFormulasForACubic) {
+  // notes "Higher Order Surfaces", "Midpoint subdivision (u = 0.5)": q0 = p0, q1 = (p0 + p1)/2,
   // q2 = q1/2 + (p1 + p2)/4, q3 = (q2 + r1)/2 = r0, r1 = r2/2 + (p1 + p2)/4,
   // r2 = (p2 + p3)/2, r3 = p3. (Powers of two: exact.)
   std::mt19937 rng(191);
@@ -493,7 +493,7 @@ TEST(BezierSubdivide, SeedMidpointFormulasForACubic) {
 // ---- degree elevation ------------------------------------------------------------------
 
 TEST(BezierDegreeElevate, OnceLeavesTheCurveUnchanged) {
-  // seed 000 §1.6 property 9, at kSamples parameters, relative kExact.
+  // ch. 1 §1.6 property 9, at kSamples parameters, relative kExact.
   std::mt19937 rng(201);
   for (int c = 0; c < kRandomCases; ++c) {
     const BezierCurve curve = random_curve(rng, c);
@@ -511,7 +511,7 @@ TEST(BezierDegreeElevate, OnceLeavesTheCurveUnchanged) {
 }
 
 TEST(BezierDegreeElevate, RepeatedInOneStepEqualsOneStepRepeated) {
-  // The NURBS Book eq. (5.36) (all steps at once) against the seed's formula
+  // The NURBS Book eq. (5.36) (all steps at once) against the lecture's formula
   // applied `times` times; and the curve is still unchanged.
   std::mt19937 rng(211);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -531,20 +531,20 @@ TEST(BezierDegreeElevate, RepeatedInOneStepEqualsOneStepRepeated) {
   }
 }
 
-TEST(BezierDegreeElevate, SeedFormulaOnACubic) {
-  // seed 000 §1.6 property 9 for n = 3: b'_0 = b0, b'_1 = (b0 + 3 b1)/4,
-  // b'_2 = (2 b1 + 2 b2)/4, b'_3 = (3 b2 + b3)/4, b'_4 = b3. For the seed's cubic:
+TEST(BezierDegreeElevate, LectureFormulaOnACubic) {
+  // ch. 1 §1.6 property 9 for n = 3: b'_0 = b0, b'_1 = (b0 + 3 b1)/4,
+  // b'_2 = (2 b1 + 2 b2)/4, b'_3 = (3 b2 + b3)/4, b'_4 = b3. For the lecture's cubic:
   // (0,0), (1.5,3.375), (5.25,5.5), (9.125,5.375), (11,2)   (by hand).
-  // (seed 004 prints the second point as (P0 + P1)/(n+1); the factor n on P1
+  // (notes "Higher Order Surfaces" prints the second point as (P0 + P1)/(n+1); the factor n on P1
   // is missing there. Its last inner point (n P_{n-1} + P_n)/(n+1) is right.)
-  const BezierCurve e = degree_elevate(seed_cubic());
+  const BezierCurve e = degree_elevate(lecture_cubic());
   const std::vector<Vec3> expected = {{0, 0, 0}, {1.5, 3.375, 0}, {5.25, 5.5, 0}, {9.125, 5.375, 0}, {11, 2, 0}};
   ASSERT_EQ(e.P.size(), expected.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) expect_near_vec(e.P[i], expected[i], kSeedPointTol);
+  for (std::size_t i = 0; i < expected.size(); ++i) expect_near_vec(e.P[i], expected[i], kLecturePointTol);
 }
 
 TEST(BezierDegreeElevate, ZeroTimesIsTheSameCurve) {
-  const BezierCurve curve = seed_cubic();
+  const BezierCurve curve = lecture_cubic();
   EXPECT_EQ(degree_elevate(curve, 0).P, curve.P);
 }
 
@@ -593,8 +593,8 @@ TEST(BezierDerivative, HodographDeCasteljauEndFormulasAndPowerFormAgree) {
   }
 }
 
-TEST(BezierDerivative, SeedEndPointFormulasForTheSeedCubic) {
-  // seed 000 §1.6 "Derivatives at end points", n = 3, by hand for b0..b3 =
+TEST(BezierDerivative, LectureEndPointFormulasForTheLectureCubic) {
+  // ch. 1 §1.6 "Derivatives at end points", n = 3, by hand for b0..b3 =
   // (0,0), (2,4.5), (8.5,6.5), (11,2):
   //   X'(0)   = 3 (b1 - b0)                = (6, 13.5)
   //   X''(0)  = 6 (b2 - 2 b1 + b0)         = (27, -15)
@@ -602,8 +602,8 @@ TEST(BezierDerivative, SeedEndPointFormulasForTheSeedCubic) {
   //   X'(1)   = 3 (b3 - b2)                = (7.5, -13.5)
   //   X''(1)  = 6 (b3 - 2 b2 + b1)         = (-24, -39)
   //   X'''(1) = X'''(0)                    = (-51, -24)
-  const BezierCurve c = seed_cubic();
-  const double tol = kSeedDerivativeTol;
+  const BezierCurve c = lecture_cubic();
+  const double tol = kLectureDerivativeTol;
   expect_near_vec(bezier_start_derivative(c, 1), {6, 13.5, 0}, tol);
   expect_near_vec(bezier_start_derivative(c, 2), {27, -15, 0}, tol);
   expect_near_vec(bezier_start_derivative(c, 3), {-51, -24, 0}, tol);
@@ -613,7 +613,7 @@ TEST(BezierDerivative, SeedEndPointFormulasForTheSeedCubic) {
   EXPECT_EQ(bezier_start_derivative(c, 4), Vec3{});
   EXPECT_EQ(bezier_start_derivative(c, 0), c.P.front());
   EXPECT_EQ(bezier_end_derivative(c, 0), c.P.back());
-  // The hodograph points, seed 000 §1.6 property 11: b'_i = n (b_{i+1} - b_i).
+  // The hodograph points, ch. 1 §1.6 property 11: b'_i = n (b_{i+1} - b_i).
   const BezierCurve h = bezier_derivative(c, 1);
   const std::vector<Vec3> expected = {{6, 13.5, 0}, {19.5, 6, 0}, {7.5, -13.5, 0}};
   ASSERT_EQ(h.P.size(), 3u);
@@ -621,7 +621,7 @@ TEST(BezierDerivative, SeedEndPointFormulasForTheSeedCubic) {
 }
 
 TEST(BezierDerivative, ChainRuleFactorOnAGeneralInterval) {
-  // seed 000 §1.6 "Generalization": the same points on [a, b] and on [0, 1];
+  // ch. 1 §1.6 "Generalization": the same points on [a, b] and on [0, 1];
   // X_[a,b]^(k)(a + s h) = X_[0,1]^(k)(s) / h^k.
   std::mt19937 rng(231);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -641,7 +641,7 @@ TEST(BezierDerivative, ChainRuleFactorOnAGeneralInterval) {
 }
 
 TEST(BezierDerivative, OrderZeroIsTheCurveAndAboveDegreeIsZero) {
-  const BezierCurve c = seed_cubic(1, 3);
+  const BezierCurve c = lecture_cubic(1, 3);
   EXPECT_EQ(bezier_derivative(c, 0).P, c.P);
   const BezierCurve zero = bezier_derivative(c, 4);
   ASSERT_EQ(zero.P.size(), 1u);
@@ -656,15 +656,15 @@ TEST(BezierDerivative, OrderZeroIsTheCurveAndAboveDegreeIsZero) {
 
 // ---- integral ------------------------------------------------------------------------------
 
-TEST(BezierIntegral, SeedCubicAgreesWithSimpson) {
-  // seed 000 §1.6: int_a^b X = (b-a)/(n+1) (b0 + ... + bn) = (21.5, 13)/4 on [0, 1].
+TEST(BezierIntegral, LectureCubicAgreesWithSimpson) {
+  // ch. 1 §1.6: int_a^b X = (b-a)/(n+1) (b0 + ... + bn) = (21.5, 13)/4 on [0, 1].
   // Independent check: Simpson's rule (h/6)(X(a) + 4 X(mid) + X(b)) is exact for cubics.
   for (const auto& [a, b] : {std::pair{0.0, 1.0}, std::pair{-1.0, 3.0}}) {
-    const BezierCurve c = seed_cubic(a, b);
+    const BezierCurve c = lecture_cubic(a, b);
     const Vec3 simpson =
         (b - a) / 6 * (bezier_point(c, a) + 4 * bezier_point(c, (a + b) / 2) + bezier_point(c, b));
-    expect_near_vec(bezier_integral(c), simpson, kSeedDerivativeTol);
-    expect_near_vec(bezier_integral(c), (b - a) * Vec3{5.375, 3.25, 0}, kSeedDerivativeTol);
+    expect_near_vec(bezier_integral(c), simpson, kLectureDerivativeTol);
+    expect_near_vec(bezier_integral(c), (b - a) * Vec3{5.375, 3.25, 0}, kLectureDerivativeTol);
   }
 }
 
@@ -704,11 +704,11 @@ TEST(BezierAntiderivative, DifferentiatesBackToTheCurve) {
 
 // ---- interpolation ---------------------------------------------------------------------------
 
-TEST(BezierInterpolate, SeedExampleChordalCubic) {
-  // seed 000 §1.6 "Interpolating with Bézier segments", example: P0 = (1,2),
-  // P1 = (2,1), P2 = (4,2), P3 = (6,6) at the seed's (rounded) chordal
+TEST(BezierInterpolate, LectureExampleChordalCubic) {
+  // ch. 1 §1.6 "Interpolating with Bézier segments", example: P0 = (1,2),
+  // P1 = (2,1), P2 = (4,2), P3 = (6,6) at the lecture's (rounded) chordal
   // parameters t = 0, 1.42, 3.66, 8.13 on [a, b] = [0, 8.13].
-  // (The seed's last condition reads "(1,2) = ... = b_3"; it means P3 = (6,6).)
+  // (The lecture's last condition reads "(1,2) = ... = b_3"; it means P3 = (6,6).)
   const std::vector<Vec3> Q = {{1, 2, 0}, {2, 1, 0}, {4, 2, 0}, {6, 6, 0}};
   const std::vector<double> t = {0, 1.42, 3.66, 8.13};
   const BezierCurve c = bezier_interpolate(Q, t, 0, 8.13);
@@ -716,7 +716,7 @@ TEST(BezierInterpolate, SeedExampleChordalCubic) {
   EXPECT_EQ(c.a, 0.0);
   EXPECT_EQ(c.b, 8.13);
 
-  // The seed's own reduction: b0 = P0, b3 = P3 and a 2x2 system for b1, b2,
+  // The lecture's own reduction: b0 = P0, b3 = P3 and a 2x2 system for b1, b2,
   //   B1(s_j) b1 + B2(s_j) b2 = P_j - B0(s_j) P0 - B3(s_j) P3,  j = 1, 2,
   // solved here by Cramer's rule with the cubic Bernstein closed forms.
   auto B = [](int i, double s) {
@@ -729,21 +729,21 @@ TEST(BezierInterpolate, SeedExampleChordalCubic) {
   const Vec3 r1 = Q[1] - B(0, s1) * Q[0] - B(3, s1) * Q[3];
   const Vec3 r2 = Q[2] - B(0, s2) * Q[0] - B(3, s2) * Q[3];
   const Vec3 b1 = (m22 * r1 - m12 * r2) / det, b2 = (m11 * r2 - m21 * r1) / det;
-  const double tol = kSeedPointTol;
+  const double tol = kLecturePointTol;
   expect_near_vec(c.P[0], Q[0], tol);
   expect_near_vec(c.P[1], b1, tol);
   expect_near_vec(c.P[2], b2, tol);
   expect_near_vec(c.P[3], Q[3], tol);
-  // The same numbers from exact rational arithmetic on the seed's data
+  // The same numbers from exact rational arithmetic on the lecture's data
   // (Python fractions, rounded to double): the coefficients are 0.35693,
-  // 0.07554, 0.40827, 0.33429 (seed: 0.36, 0.07, 0.41, 0.33) and the right-hand
-  // sides 1.40582, 3.28637 (x) and -0.15638, 1.12016 (y) (seed: 1.38, 3.29, -0.18, 1.12).
+  // 0.07554, 0.40827, 0.33429 (lecture: 0.36, 0.07, 0.41, 0.33) and the right-hand
+  // sides 1.40582, 3.28637 (x) and -0.15638, 1.12016 (y) (lecture: 1.38, 3.29, -0.18, 1.12).
   expect_near_vec(c.P[1], {2.5058317197147955, -1.5471395461440598, 0}, tol);
   expect_near_vec(c.P[2], {6.770585289334301, 5.2404396375074782, 0}, tol);
-  // The seed prints b1 = (2.5, -1.51), b2 = (6.86, 5.27) from its two-decimal
-  // system (see kSeedTwoDecimalSystem).
-  expect_near_vec(c.P[1], {2.5, -1.51, 0}, kSeedTwoDecimalSystem);
-  expect_near_vec(c.P[2], {6.86, 5.27, 0}, kSeedTwoDecimalSystem);
+  // The lecture prints b1 = (2.5, -1.51), b2 = (6.86, 5.27) from its two-decimal
+  // system (see kLectureTwoDecimalSystem).
+  expect_near_vec(c.P[1], {2.5, -1.51, 0}, kLectureTwoDecimalSystem);
+  expect_near_vec(c.P[2], {6.86, 5.27, 0}, kLectureTwoDecimalSystem);
   // And the curve passes through the four points.
   for (std::size_t j = 0; j < 4; ++j) expect_near_vec(bezier_point(c, t[j]), Q[j], tol);
   // Without an interval the overload takes [min t, max t] = [0, 8.13].
@@ -754,7 +754,7 @@ TEST(BezierInterpolate, SeedExampleChordalCubic) {
 }
 
 TEST(BezierInterpolate, ReproducesItsPointsAndEqualsTheLagrangeCurve) {
-  // X(t_j) = Q_j, and the interpolant is unique (seed 000 §1.6: "the solution
+  // X(t_j) = Q_j, and the interpolant is unique (ch. 1 §1.6: "the solution
   // could be computed using the Lagrange basis as well").
   std::mt19937 rng(261);
   std::uniform_real_distribution<double> jitter(0, 0.5), start(-2, 2), length(0.5, 3);
@@ -782,7 +782,7 @@ TEST(BezierInterpolate, ReproducesItsPointsAndEqualsTheLagrangeCurve) {
 
 // ---- edges ------------------------------------------------------------------------------------
 
-// ---- convex hull (seed 000 §1.6 property 1) ----------------------------------------
+// ---- convex hull (ch. 1 §1.6 property 1) ----------------------------------------
 
 TEST(ConvexHullXy, SquareDropsInteriorAndEdgePointsCounterClockwise) {
   // Corners of the unit square given out of order, with its centre and the
@@ -795,10 +795,10 @@ TEST(ConvexHullXy, SquareDropsInteriorAndEdgePointsCounterClockwise) {
   for (std::size_t i = 0; i < want.size(); ++i) EXPECT_EQ(hull[i], want[i]) << i;
 }
 
-TEST(ConvexHullXy, SeedPolygonIsItsOwnHull) {
-  // The seed's control polygon (0,0), (2,4.5), (8.5,6.5), (11,2) is convex:
+TEST(ConvexHullXy, LecturePolygonIsItsOwnHull) {
+  // The lecture's control polygon (0,0), (2,4.5), (8.5,6.5), (11,2) is convex:
   // all four points are corners, in the order (0,0), (11,2), (8.5,6.5), (2,4.5).
-  const std::vector<Vec3> hull = convex_hull_xy(seed_cubic().P);
+  const std::vector<Vec3> hull = convex_hull_xy(lecture_cubic().P);
   const std::vector<Vec3> want = {{0, 0, 0}, {11, 2, 0}, {8.5, 6.5, 0}, {2, 4.5, 0}};
   ASSERT_EQ(hull.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i) EXPECT_EQ(hull[i], want[i]) << i;
@@ -816,7 +816,7 @@ TEST(ConvexHullXy, DegenerateInputs) {
 }
 
 TEST(ConvexHullXy, EveryCurvePointLiesInTheHullOfItsControlPoints) {
-  // Property 1 of seed 000 §1.6 across random planar curves: no sample is to
+  // Property 1 of ch. 1 §1.6 across random planar curves: no sample is to
   // the right of a counter-clockwise hull edge (beyond round-off).
   std::mt19937 rng(7);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -857,7 +857,7 @@ TEST(BezierEdge, DegreeZeroIsOnePoint) {
 }
 
 TEST(BezierEdge, ParameterAtTheEndsAndRoundOffPastThem) {
-  const BezierCurve c = seed_cubic(0.1, 0.7);
+  const BezierCurve c = lecture_cubic(0.1, 0.7);
   EXPECT_EQ(bezier_point(c, 0.1), c.P.front());
   EXPECT_EQ(bezier_point(c, 0.7), c.P.back());
   EXPECT_EQ(de_casteljau(c, 0.7).s, 1.0);
@@ -883,7 +883,7 @@ TEST(BezierErrors, EmptyControlPoints) {
 }
 
 TEST(BezierErrors, ParameterOutsideTheIntervalSaysWhichEnd) {
-  const BezierCurve c = seed_cubic();
+  const BezierCurve c = lecture_cubic();
   expect_contains(error_of([&] { bezier_point(c, 1.5); }), "bezier_point: t=1.5 is outside [a, b] = [0, 1] (above b)");
   expect_contains(error_of([&] { de_casteljau(c, -0.25); }), "t=-0.25 is outside [a, b] = [0, 1] (below a)");
   expect_contains(error_of([&] { bezier_derivatives(c, 2, 1); }), "t=2 is outside");
@@ -895,31 +895,31 @@ TEST(BezierErrors, ParameterOutsideTheIntervalSaysWhichEnd) {
 }
 
 TEST(BezierErrors, NotFiniteValuesAreNamed) {
-  BezierCurve c = seed_cubic();
+  BezierCurve c = lecture_cubic();
   expect_contains(error_of([&] { bezier_point(c, NAN); }), "bezier_point: t=nan is not finite");
   expect_contains(error_of([&] { bezier_point(c, INFINITY); }), "t=inf is not finite");
   c.P[1].y = NAN;
   expect_contains(error_of([&] { bezier_point(c, 0.5); }), "P[1]=(2, nan, 0) is not finite");
-  c = seed_cubic();
+  c = lecture_cubic();
   c.b = INFINITY;
   expect_contains(error_of([&] { bezier_point(c, 0.5); }), "b=inf is not finite");
   expect_contains(error_of([] { bezier_interpolate({{0, 0, 0}, {1, NAN, 0}}, {0, 1}); }), "Q[1]=(1, nan, 0) is not finite");
   expect_contains(error_of([] { bezier_interpolate({{0, 0, 0}, {1, 1, 0}}, {0, NAN}); }), "t[1]=nan is not finite");
   expect_contains(error_of([] { bezier_from_monomial({{0, 0, 0}, {NAN, 0, 0}}); }), "c[1]=(nan, 0, 0) is not finite");
-  expect_contains(error_of([] { bezier_antiderivative(seed_cubic(), {NAN, 0, 0}); }), "start=(nan, 0, 0) is not finite");
+  expect_contains(error_of([] { bezier_antiderivative(lecture_cubic(), {NAN, 0, 0}); }), "start=(nan, 0, 0) is not finite");
 }
 
 TEST(BezierErrors, EmptyOrReversedInterval) {
-  BezierCurve c = seed_cubic(1, 1);
+  BezierCurve c = lecture_cubic(1, 1);
   expect_contains(error_of([&] { bezier_point(c, 1); }), "interval [a, b] = [1, 1] is empty (need a < b)");
-  c = seed_cubic(2, 1);
+  c = lecture_cubic(2, 1);
   expect_contains(error_of([&] { degree_elevate(c); }), "[a, b] = [2, 1] is empty");
   expect_contains(error_of([] { bernstein(0, 2, 0.5, 1, 0); }), "[a, b] = [1, 0] is empty");
   expect_contains(error_of([] { bezier_from_monomial({{1, 0, 0}}, 3, 3); }), "[a, b] = [3, 3] is empty");
 }
 
 TEST(BezierErrors, NegativeOrdersAndDegrees) {
-  const BezierCurve c = seed_cubic();
+  const BezierCurve c = lecture_cubic();
   expect_contains(error_of([&] { bezier_derivative(c, -1); }), "bezier_derivative: derivative order k=-1 is negative");
   expect_contains(error_of([&] { bezier_derivative_at(c, 0.5, -2); }), "derivative order k=-2 is negative");
   expect_contains(error_of([&] { bezier_derivatives(c, 0.5, -1); }), "derivative order d=-1 is negative");
@@ -939,22 +939,22 @@ TEST(BezierErrors, InterpolationData) {
   expect_contains(error_of([] { bezier_interpolate({{1, 1, 1}}, {0.5}); }), "pass a and b explicitly");
 }
 
-// ---- joining segments: continuation_points (seed 000 §1.6 "Bézier splines"; seed 004) ----
+// ---- joining segments: continuation_points (ch. 1 §1.6 "Bézier splines"; notes "Higher Order Surfaces") ----
 
-// The seed's conditions at the joint of a cubic on [t_i, t_{i+1}] = [1, 3]
+// The lecture's conditions at the joint of a cubic on [t_i, t_{i+1}] = [1, 3]
 // (Delta_i = 2) and the next segment of length Delta_{i+1} = 3.
-TEST(ContinuationPoints, SatisfyTheSeedsC1AndC2ConditionsAndEquations2And3) {
-  const BezierCurve a = seed_cubic(1, 3);
+TEST(ContinuationPoints, SatisfyTheLecturesC1AndC2ConditionsAndEquations2And3) {
+  const BezierCurve a = lecture_cubic(1, 3);
   const double d0 = 2, d1 = 3;
   const BezierContinuation c = continuation_points(a, 2, d1);
   ASSERT_EQ(c.points.size(), 3u);
   EXPECT_DOUBLE_EQ(c.tau, 2.5);  // (t_{i+2} - t_i) / Delta_i
   const Vec3 a1 = a.P[1], a2 = a.P[2], a3 = a.P[3], b0 = c.points[0], b1 = c.points[1], b2 = c.points[2];
-  const double tol = kSeedPointTol;
+  const double tol = kLecturePointTol;
   expect_near_vec(b0, a3, 0);                                                  // C0
   expect_near_vec((a3 - a2) / d0, (b1 - b0) / d1, tol);                        // C1
   expect_near_vec((a3 - 2 * a2 + a1) / (d0 * d0), (b2 - 2 * b1 + b0) / (d1 * d1), tol);  // C2
-  // Seed eq. 1-3 with b_{3(i+1)} = a3: the de Boor point d and the next points.
+  // The lecture's eq. 1-3 with b_{3(i+1)} = a3: the de Boor point d and the next points.
   const Vec3 d = a2 + d1 / d0 * (a2 - a1);
   expect_near_vec(b1, a3 + d1 / d0 * (a3 - a2), tol);
   expect_near_vec(c.levels[1][0], d, tol);
@@ -991,18 +991,18 @@ TEST(ContinuationPoints, DerivativesAgreeUpToOrderK) {
   }
 }
 
-// Seed 004: G1 is p_n - p_{n-1} = k (r_1 - r_0); it is the C1 point for a next
+// Notes "Higher Order Surfaces": G1 is p_n - p_{n-1} = k (r_1 - r_0); it is the C1 point for a next
 // interval of Delta_i / k (the same direction, another speed).
 TEST(ContinuationPoints, G1WithFactorKIsTheC1PointForLengthDeltaOverK) {
-  const BezierCurve a = seed_cubic(0, 2);
+  const BezierCurve a = lecture_cubic(0, 2);
   for (double k : {0.5, 1.0, 2.0, 3.0}) {
     const std::vector<Vec3> r = continuation_points(a, 1, (a.b - a.a) / k).points;
-    expect_near_vec(a.P[3] - a.P[2], k * (r[1] - r[0]), kSeedPointTol);
+    expect_near_vec(a.P[3] - a.P[2], k * (r[1] - r[0]), kLecturePointTol);
   }
 }
 
 TEST(ContinuationPoints, ErrorsNameKAndTheLength) {
-  const BezierCurve a = seed_cubic();
+  const BezierCurve a = lecture_cubic();
   EXPECT_ERROR_HAS(continuation_points(a, 4, 1), "continuity k=4 must lie in [0, 3]");
   EXPECT_ERROR_HAS(continuation_points(a, -1, 1), "continuity k=-1");
   EXPECT_ERROR_HAS(continuation_points(a, 1, 0), "next_length=0 must be > 0");

@@ -1,7 +1,7 @@
 // tests/spline/bspline_test.cpp — B-spline core (common/spline/bspline.cpp).
 //
 // Every expected value names its origin: The NURBS Book (Piegl & Tiller, 2nd
-// ed.) page, a seed (../shared/seeds/) example, a hand computation shown in
+// ed.) page, a worked example of the lecture notes, a hand computation shown in
 // the comment, or a property checked over many random curves (fixed seeds).
 #include <gtest/gtest.h>
 
@@ -37,7 +37,7 @@ constexpr double kFiniteDifference = 1e-6;
 constexpr double kContinuity = 1e-12;
 constexpr double kJump = 1e-3;
 
-constexpr int kSamples = 101;       // parameters per curve (STYLE.md: >= 101)
+constexpr int kSamples = 101;       // parameters per curve (>= 101, so a curve is seen at every 1 %)
 constexpr int kRandomCurves = 300;  // curves per property test
 
 // ---- helpers ------------------------------------------------------------------
@@ -111,7 +111,7 @@ void expect_same_curve(const BsplineCurve& a, const BsplineCurve& b, const std::
 }
 
 /// de Casteljau on a Bézier curve over [a, b]: an evaluator independent of the
-/// B-spline code (seed 004 "Rendering Bezier curves").
+/// B-spline code (notes "Higher Order Surfaces", "Rendering Bezier curves").
 Vec3 de_casteljau(const BezierCurve& bz, double u) {
   const double t = (u - bz.a) / (bz.b - bz.a);
   std::vector<Vec3> q = bz.P;
@@ -209,7 +209,7 @@ TEST(DersBasisFuns, BookKnotVectorAtFiveHalves) {
 }
 
 TEST(BasisFuns, PartitionOfUnityAndNonNegativityOnRandomKnotVectors) {
-  // Seed 000 §1.6 comment 6 / seed 004 "convex hull property": sum N = 1, N >= 0,
+  // Ch. 1 §1.6 comment 6 / notes "Higher Order Surfaces", "convex hull property": sum N = 1, N >= 0,
   // at uniform parameters, at every knot in the domain and at both ends.
   CurveMaker make(101);
   for (int trial = 0; trial < kRandomCurves; ++trial) {
@@ -235,7 +235,7 @@ TEST(BasisFuns, PartitionOfUnityAndNonNegativityOnRandomKnotVectors) {
 }
 
 TEST(BasisFuns, AllFourFormsAgreeOnRandomKnotVectors) {
-  // basis_funs (A2.2), one_basis_fun (A2.4), cox_de_boor (the seeds' recursion)
+  // basis_funs (A2.2), one_basis_fun (A2.4), cox_de_boor (the lecture's recursion)
   // and all_basis_funs (the table) compute the same functions.
   CurveMaker make(102);
   for (int trial = 0; trial < kRandomCurves / 3; ++trial) {
@@ -283,7 +283,7 @@ TEST(DersBasisFuns, DerivativesSumToZeroAndMatchTheValues) {
 // ---- evaluation -------------------------------------------------------------------------
 
 TEST(CurvePoint, ClampedCurveInterpolatesItsEndPoints) {
-  // Seed 004 "Nonperiodic knot vectors": Q(t_{k-1}) = p_0, Q(t_{n+1}) = p_n,
+  // Notes "Higher Order Surfaces" "Nonperiodic knot vectors": Q(t_{k-1}) = p_0, Q(t_{n+1}) = p_n,
   // checked at u == U[p] and u == U[n+1] exactly.
   CurveMaker make(201);
   for (int trial = 0; trial < kRandomCurves; ++trial) {
@@ -295,7 +295,7 @@ TEST(CurvePoint, ClampedCurveInterpolatesItsEndPoints) {
 }
 
 TEST(CurvePoint, StrongConvexHull) {
-  // Strong convex hull (The NURBS Book ch. 3; seed 000 §1.6 comment 6): C(u) lies in the hull
+  // Strong convex hull (The NURBS Book ch. 3; ch. 1 §1.6 comment 6): C(u) lies in the hull
   // of P[span-p..span]; checked through its bounding box (a consequence).
   CurveMaker make(202);
   for (int trial = 0; trial < kRandomCurves; ++trial) {
@@ -317,7 +317,7 @@ TEST(CurvePoint, StrongConvexHull) {
 }
 
 TEST(CurvePoint, AffineInvariance) {
-  // Seed 004 "Affine invariance": Phi(sum P_i N_i) = sum Phi(P_i) N_i, for a
+  // Notes "Higher Order Surfaces" "Affine invariance": Phi(sum P_i N_i) = sum Phi(P_i) N_i, for a
   // random matrix and translation (rational curves too: weights unchanged).
   CurveMaker make(203);
   for (int trial = 0; trial < kRandomCurves; ++trial) {
@@ -358,7 +358,7 @@ TEST(CurvePoint, ReversalSymmetry) {
 }
 
 TEST(CurvePoint, PolynomialCurveWithUnitWeightsIsTheSame) {
-  // Seed 000 §1.6 NURBS comment 1: "For w_i = 1 we get a regular B-spline".
+  // Ch. 1 §1.6 NURBS comment 1: "For w_i = 1 we get a regular B-spline".
   CurveMaker make(205);
   for (int trial = 0; trial < kRandomCurves / 3; ++trial) {
     const BsplineCurve c = make.make(false, trial % 2 == 0);
@@ -471,8 +471,8 @@ TEST(CurvePoints, RejectsUnsortedAndOutOfDomainParameters) {
 
 // ---- knot insertion -------------------------------------------------------------------------
 
-TEST(KnotInsert, SeedExampleInsertsHalfIntoCubic) {
-  // Seed 000 §1.6 "Knot insertion, Example": U = (0,0,0,0,.2,.4,.6,.8,1,1,1,1),
+TEST(KnotInsert, LectureExampleInsertsHalfIntoCubic) {
+  // Ch. 1 §1.6 "Knot insertion, Example": U = (0,0,0,0,.2,.4,.6,.8,1,1,1,1),
   // t = 0.5 in [u_5, u_6): a_5 = 1/6, a_4 = 1/2, a_3 = 5/6; the new polygon is
   // d0, d1, d2, q3, q4, q5, d5, d6, d7 with q_i = (1 - a_i) d_{i-1} + a_i d_i
   // and the knots (0,0,0,0,.2,.4,.5,.6,.8,1,1,1,1).
@@ -500,12 +500,12 @@ TEST(KnotInsert, SeedExampleInsertsHalfIntoCubic) {
   EXPECT_EQ(book.U, expected_U);
   for (std::size_t i = 0; i < expected_P.size(); ++i)
     EXPECT_LE(dist(book.P[i], expected_P[i]), 4 * kRounding * scale_of(c)) << "point " << i;
-  expect_same_curve(c, step.curve, samples(c), "seed insertion");
+  expect_same_curve(c, step.curve, samples(c), "lecture insertion");
 }
 
 TEST(KnotInsert, LeavesRandomCurvesUnchanged) {
   // Insert a random parameter r times (up to multiplicity p), and an existing
-  // knot once; the curve is the same at 101 parameters (seed 000 §1.6 "without
+  // knot once; the curve is the same at 101 parameters (ch. 1 §1.6 "without
   // changing the shape of the curve").
   CurveMaker make(401);
   for (int trial = 0; trial < kRandomCurves; ++trial) {
@@ -522,7 +522,7 @@ TEST(KnotInsert, LeavesRandomCurvesUnchanged) {
     for (double k : c.U) {
       if (k > d.a && k < d.b && knot_multiplicity(c.U, k) < c.p) {
         expect_same_curve(c, knot_insert(c, k), samples(c), "insert existing knot");
-        expect_same_curve(c, knot_insert_step(c, k).curve, samples(c), "seed step at existing knot");
+        expect_same_curve(c, knot_insert_step(c, k).curve, samples(c), "lecture step at existing knot");
         break;
       }
     }
@@ -540,7 +540,7 @@ TEST(KnotInsert, AtTheEndsOfAnUnclampedDomain) {
     expect_same_curve(c, knot_insert(c, u, 1), samples(c), "insert at domain end");
     expect_same_curve(c, knot_insert(c, u, 2), samples(c), "insert at domain end to multiplicity p");
     EXPECT_ERROR_HAS(knot_insert(c, u, 3), "onto multiplicity 1 gives 4 > p=3");
-    expect_same_curve(c, knot_insert_step(c, u).curve, samples(c), "seed step at domain end");
+    expect_same_curve(c, knot_insert_step(c, u).curve, samples(c), "lecture step at domain end");
   }
 }
 
@@ -598,7 +598,7 @@ TEST(KnotRefine, ResultEqualsRepeatedInsertion) {
 // ---- decomposition, splitting, elevation ----------------------------------------------
 
 TEST(BezierDecompose, PiecesReproduceTheCurve) {
-  // Seed 000 §1.6 "Displaying B-spline curves": every knot at multiplicity
+  // Ch. 1 §1.6 "Displaying B-spline curves": every knot at multiplicity
   // p turns the polygon into Bézier points. Each piece, evaluated by an
   // independent de Casteljau, equals the B-spline on its interval.
   CurveMaker make(501);
@@ -697,7 +697,7 @@ TEST(DegreeElevate, LeavesRandomCurvesUnchanged) {
 }
 
 TEST(DegreeElevate, CurveWithABreakKeepsTheBreak) {
-  // Seed 003 case D (an interior knot of multiplicity p + 1 = 4) survives
+  // Notes "B-Spline Polynomials" case D (an interior knot of multiplicity p + 1 = 4) survives
   // elevation: the curve still jumps there, and is unchanged elsewhere.
   BsplineCurve c;
   c.p = 3;
@@ -728,10 +728,10 @@ TEST(DegreeElevate, LinePolygonBecomesAQuadraticWithMidpoints) {
 
 // ---- knot vectors and closed curves -----------------------------------------------------
 
-TEST(KnotVectors, ClampedUniformMatchesSeedFormula) {
-  // Seed 004 "Uniform nonperiodic knot vectors" with order k = p + 1:
+TEST(KnotVectors, ClampedUniformMatchesLectureFormula) {
+  // Notes "Higher Order Surfaces" "Uniform nonperiodic knot vectors" with order k = p + 1:
   // t_i = 0 (i < k), i - k + 1 (k <= i <= n), n - k + 2 (n < i <= n + k),
-  // here divided by n - k + 2 so the domain is [0, 1]. (The seed's ranges
+  // here divided by n - k + 2 so the domain is [0, 1]. (The lecture's ranges
   // read "k..n-1" and "n..n+k-1", one short; those give n + k knots, not n + k + 1.)
   for (int p = 1; p <= 5; ++p)
     for (int n = p; n <= p + 6; ++n) {
@@ -739,17 +739,17 @@ TEST(KnotVectors, ClampedUniformMatchesSeedFormula) {
       const std::vector<double> U = clamped_uniform_knots(n, p);
       ASSERT_EQ(static_cast<int>(U.size()), n + k + 1);
       for (int i = 0; i <= n + k; ++i) {
-        const double seed = i < k ? 0.0 : (i <= n ? i - k + 1 : n - k + 2);
-        EXPECT_NEAR(U[i], seed / (n - k + 2), kRounding) << "p=" << p << " n=" << n << " i=" << i;
+        const double printed = i < k ? 0.0 : (i <= n ? i - k + 1 : n - k + 2);
+        EXPECT_NEAR(U[i], printed / (n - k + 2), kRounding) << "p=" << p << " n=" << n << " i=" << i;
       }
       const std::vector<double> V = uniform_knots(n, p);
-      for (int i = 0; i <= n + k; ++i) EXPECT_EQ(V[i], i);  // seed 004 "knots = 0, 1, 2, ..."
+      for (int i = 0; i <= n + k; ++i) EXPECT_EQ(V[i], i);  // notes "Higher Order Surfaces", "knots = 0, 1, 2, ..."
     }
   EXPECT_ERROR_HAS(clamped_uniform_knots(2, 3), "needs 1 <= p <= n, got p=3, n=2");
 }
 
 TEST(PeriodicCurve, ClosesWithContinuityPMinus1) {
-  // Seed 003 "Closed cubic B-splines: make last 3 control points coincide with
+  // Notes "B-Spline Polynomials" "Closed cubic B-splines: make last 3 control points coincide with
   // 1st 3", for p = 1..5: C and its derivatives up to p - 1 agree at both ends.
   CurveMaker make(601);
   for (int trial = 0; trial < 60; ++trial) {
@@ -772,8 +772,8 @@ TEST(PeriodicCurve, ClosesWithContinuityPMinus1) {
   }
 }
 
-TEST(PeriodicCurve, SeedClosedCubicWithM6) {
-  // Seed 003 example m = 6: P0..P6 with P4 = P0, P5 = P1, P6 = P2 ("0 <--> m-2,
+TEST(PeriodicCurve, LectureClosedCubicWithM6) {
+  // Notes "B-Spline Polynomials" example m = 6: P0..P6 with P4 = P0, P5 = P1, P6 = P2 ("0 <--> m-2,
   // 1 <--> m-1, 2 <--> m"), from 4 distinct points.
   const std::vector<Vec3> pts = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
   const BsplineCurve c = periodic_curve(pts, 3, 2);
@@ -781,24 +781,24 @@ TEST(PeriodicCurve, SeedClosedCubicWithM6) {
   EXPECT_EQ(c.P[4], c.P[0]);
   EXPECT_EQ(c.P[5], c.P[1]);
   EXPECT_EQ(c.P[6], c.P[2]);
-  // Start point by seed 003's d: (P0 + 4 P1 + P2) / 6 = ((0 + 8 + 2) / 6, (0 + 0 + 2) / 6) = (5/3, 1/3).
+  // Start point by the d of the notes "B-Spline Polynomials": (P0 + 4 P1 + P2) / 6 = ((0 + 8 + 2) / 6, (0 + 0 + 2) / 6) = (5/3, 1/3).
   const Vec3 start = curve_point(c, domain(c).a);
   EXPECT_NEAR(start.x, 5.0 / 3, kRounding * 4);
   EXPECT_NEAR(start.y, 1.0 / 3, kRounding * 4);
   EXPECT_LE(dist(start, curve_point(c, domain(c).b)), kRounding * 8);
 }
 
-// ---- uniform cubic matrix form (seeds 003, 004) ---------------------------------------
+// ---- uniform cubic matrix form (notes "B-Spline Polynomials", "Higher Order Surfaces") ---
 
-TEST(UniformCubic, MatrixIsTheSeedMatrix) {
-  // Seed 004 "Matrix form": 1/6 [[-1,3,-3,1],[3,-6,3,0],[-3,0,3,0],[1,4,1,0]].
-  const double seed[4][4] = {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 0, 3, 0}, {1, 4, 1, 0}};
+TEST(UniformCubic, MatrixIsTheLectureMatrix) {
+  // Notes "Higher Order Surfaces" "Matrix form": 1/6 [[-1,3,-3,1],[3,-6,3,0],[-3,0,3,0],[1,4,1,0]].
+  const double printed[4][4] = {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 0, 3, 0}, {1, 4, 1, 0}};
   for (int r = 0; r < 4; ++r)
-    for (int col = 0; col < 4; ++col) EXPECT_EQ(kUniformCubicMatrix[r][col], seed[r][col] / 6.0);
+    for (int col = 0; col < 4; ++col) EXPECT_EQ(kUniformCubicMatrix[r][col], printed[r][col] / 6.0);
 }
 
-TEST(UniformCubic, BasisEqualsTimesMatrixAndSeedBlendingFunctions) {
-  // Seed 004: [B0 B1 B2 B3] = [t^3 t^2 t 1] M, with B0 = (1-t)^3/6,
+TEST(UniformCubic, BasisEqualsTimesMatrixAndLectureBlendingFunctions) {
+  // Notes "Higher Order Surfaces": [B0 B1 B2 B3] = [t^3 t^2 t 1] M, with B0 = (1-t)^3/6,
   // B1 = (3t^3 - 6t^2 + 4)/6, B2 = (-3t^3 + 3t^2 + 3t + 1)/6, B3 = t^3/6.
   for (int k = 0; k <= 100; ++k) {
     const double t = k / 100.0;
@@ -816,7 +816,7 @@ TEST(UniformCubic, BasisEqualsTimesMatrixAndSeedBlendingFunctions) {
     EXPECT_NEAR(B[0], std::pow(1 - t, 3) / 6, 4 * kRounding);
     EXPECT_NEAR(B[3], t * t * t / 6, 4 * kRounding);
   }
-  // Seed 003's ends: B(0) = (1/6, 4/6, 1/6, 0), B(1) = (0, 1/6, 4/6, 1/6).
+  // the ends of the notes "B-Spline Polynomials": B(0) = (1/6, 4/6, 1/6, 0), B(1) = (0, 1/6, 4/6, 1/6).
   const auto B0 = uniform_cubic_basis(0), B1 = uniform_cubic_basis(1);
   const double e0[4] = {1.0 / 6, 4.0 / 6, 1.0 / 6, 0}, e1[4] = {0, 1.0 / 6, 4.0 / 6, 1.0 / 6};
   for (int j = 0; j < 4; ++j) {
@@ -825,8 +825,8 @@ TEST(UniformCubic, BasisEqualsTimesMatrixAndSeedBlendingFunctions) {
   }
 }
 
-TEST(UniformCubic, SeedCoefficientsAndContinuityConditions) {
-  // Seed 003 "Solution": a = (-P0 + 3P1 - 3P2 + P3)/6, b = (3P0 - 6P1 + 3P2)/6,
+TEST(UniformCubic, LectureCoefficientsAndContinuityConditions) {
+  // Notes "B-Spline Polynomials" "Solution": a = (-P0 + 3P1 - 3P2 + P3)/6, b = (3P0 - 6P1 + 3P2)/6,
   // c = (-3P0 + 3P2)/6, d = (P0 + 4P1 + P2)/6, and conditions 1 and 3:
   // Q'(0) = (P2 - P0)/2, Q''(0) = 2b = P2 - 2P1 + P0.
   const Vec3 P0{0, 0, 1}, P1{1, 3, 0}, P2{4, 3, 2}, P3{5, 0, -1};
@@ -841,7 +841,7 @@ TEST(UniformCubic, SeedCoefficientsAndContinuityConditions) {
 
 TEST(UniformCubic, MatrixFormEqualsDeBoorOnUniformKnots) {
   // Segment i of the matrix form is the B-spline on U = 0, 1, 2, ... at
-  // u = 3 + i + t (seed 004 "U = u + i", shifted to the domain start U[3]).
+  // u = 3 + i + t (notes "Higher Order Surfaces", "U = u + i", shifted to the domain start U[3]).
   CurveMaker make(701);
   std::vector<Vec3> P;
   for (int i = 0; i < 9; ++i) P.push_back({make.real(-5, 5), make.real(-5, 5), make.real(-5, 5)});
@@ -859,10 +859,10 @@ TEST(UniformCubic, MatrixFormEqualsDeBoorOnUniformKnots) {
   EXPECT_ERROR_HAS(uniform_cubic_point(P, 0, 1.5), "t=1.5 is outside [0, 1]");
 }
 
-// ---- seed 003 cases A–D: continuity drops with multiplicity ----------------------------
+// ---- notes "B-Spline Polynomials" cases A–D: continuity drops with multiplicity ----------------------------
 
 /// Cubic on 8 points, the multiple knot at t_4 = 4 with multiplicity mult.
-BsplineCurve seed_case(int mult) {
+BsplineCurve lecture_case(int mult) {
   BsplineCurve c;
   c.p = 3;
   c.P = {{0, 0, 0}, {1, 2, 0}, {2, 3, 0}, {3, 1, 0}, {5, 2, 0}, {6, 0, 0}, {7, 3, 0}, {8, 1, 0}};
@@ -884,20 +884,20 @@ std::vector<double> jumps_at(const BsplineCurve& c, double u) {
   return j;
 }
 
-TEST(Continuity, SeedCaseASimpleKnotIsC2) {
-  // Seed 003 case A, knots (0,1,2,3,4,5,...): C, C', C'' continuous at t_4;
+TEST(Continuity, LectureCaseASimpleKnotIsC2) {
+  // Notes "B-Spline Polynomials" case A, knots (0,1,2,3,4,5,...): C, C', C'' continuous at t_4;
   // the third derivative (piecewise constant) jumps.
-  const auto j = jumps_at(seed_case(1), 4.0);
+  const auto j = jumps_at(lecture_case(1), 4.0);
   EXPECT_LE(j[0], kContinuity);
   EXPECT_LE(j[1], kContinuity);
   EXPECT_LE(j[2], kContinuity);
   EXPECT_GT(j[3], kJump);
 }
 
-TEST(Continuity, SeedCaseBDoubleKnotIsC1AndOnLineP2P3) {
-  // Seed 003 case B, t_4 = t_5: C and C' continuous, C'' jumps; the
+TEST(Continuity, LectureCaseBDoubleKnotIsC1AndOnLineP2P3) {
+  // Notes "B-Spline Polynomials" case B, t_4 = t_5: C and C' continuous, C'' jumps; the
   // degenerate segment Q_4 "must lie on line connecting P2 & P3".
-  const BsplineCurve c = seed_case(2);
+  const BsplineCurve c = lecture_case(2);
   const auto j = jumps_at(c, 4.0);
   EXPECT_LE(j[0], kContinuity);
   EXPECT_LE(j[1], kContinuity);
@@ -910,20 +910,20 @@ TEST(Continuity, SeedCaseBDoubleKnotIsC1AndOnLineP2P3) {
   EXPECT_LE(s, 1.0);
 }
 
-TEST(Continuity, SeedCaseCTripleKnotIsC0AndInterpolatesP3) {
-  // Seed 003 case C, t_4 = t_5 = t_6: only C continuous; the curve passes
+TEST(Continuity, LectureCaseCTripleKnotIsC0AndInterpolatesP3) {
+  // Notes "B-Spline Polynomials" case C, t_4 = t_5 = t_6: only C continuous; the curve passes
   // through P3 ("interpolates it").
-  const BsplineCurve c = seed_case(3);
+  const BsplineCurve c = lecture_case(3);
   const auto j = jumps_at(c, 4.0);
   EXPECT_LE(j[0], kContinuity);
   EXPECT_GT(j[1], kJump);
   EXPECT_LE(dist(curve_point(c, 4.0), c.P[3]), kSameCurve * scale_of(c));
 }
 
-TEST(Continuity, SeedCaseDQuadrupleKnotBreaksTheCurve) {
-  // Seed 003 case D, t_4 = ... = t_7: "Q3 and Q7 share no control points"; the
+TEST(Continuity, LectureCaseDQuadrupleKnotBreaksTheCurve) {
+  // Notes "B-Spline Polynomials" case D, t_4 = ... = t_7: "Q3 and Q7 share no control points"; the
   // curve breaks at t_4: Q3 (P0..P3) ends at P3, Q7 (P4..P7) starts at P4.
-  const BsplineCurve c = seed_case(4);
+  const BsplineCurve c = lecture_case(4);
   const auto j = jumps_at(c, 4.0);
   EXPECT_GT(j[0], kJump);
   EXPECT_LE(dist(curve_point(c, 4.0, Side::Left), c.P[3]), kSameCurve * scale_of(c));
@@ -1066,7 +1066,7 @@ TEST(GrevilleAbscissae, DegreeBelowOneOrTooFewKnotsThrow) {
 
 // ---- from_bezier_segments: the inverse of bezier_decompose -------------------------
 
-// Seed 000 §1.6: a B-spline with every knot of multiplicity p has the Bézier
+// Ch. 1 §1.6: a B-spline with every knot of multiplicity p has the Bézier
 // points as control points. Round trip: decompose random polynomial curves,
 // join the pieces, decompose again: the same pieces, and the same curve.
 TEST(FromBezierSegments, RoundTripWithBezierDecompose) {

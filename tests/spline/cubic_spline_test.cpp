@@ -1,11 +1,11 @@
 // tests/spline/cubic_spline_test.cpp — natural, clamped and periodic cubic
-// splines, their Bézier and B-spline forms, and the seed's interpolating
+// splines, their Bézier and B-spline forms, and the lecture's interpolating
 // Bézier spline through de Boor points (common/spline/cubic_spline.h).
 //
-// Expected values come from the end conditions themselves (seed 000 §1.6),
+// Expected values come from the end conditions themselves (ch. 1 §1.6),
 // from properties (C2 at the nodes, reproduction of cubics and lines, one
-// curve in every form), from the seed's three-point Bézier-spline example
-// (with numbers chosen here and worked by hand) and from the seed's wing
+// curve in every form), from the lecture's three-point Bézier-spline example
+// (with numbers chosen here and worked by hand) and from the lecture's wing
 // section remark. The B-spline form is evaluated by the project's own
 // B-spline code (bspline.h, The NURBS Book A3.1), the Bézier segments by a
 // de Casteljau written here.
@@ -35,7 +35,7 @@ constexpr double kExact = 1e-12;
 /// Jumps of S, S', S'' across an interior node, relative to the largest
 /// |S^(k)| at the nodes: the C2 conditions hold up to rounding.
 constexpr double kC2JumpTolerance = 1e-12;
-/// Hand-worked Bézier points of the seed example are small integers.
+/// Hand-worked Bézier points of the lecture example are small integers.
 constexpr double kHandTolerance = 1e-14;
 /// At least this many parameters when two forms are compared.
 constexpr int kSamples = 101;
@@ -92,7 +92,7 @@ std::vector<double> samples(double a, double b, int count = kSamples) {
   return u;
 }
 
-/// de Casteljau on a cubic Bézier segment over [a, b] (seed 000 §1.6).
+/// de Casteljau on a cubic Bézier segment over [a, b] (ch. 1 §1.6).
 Vec3 bezier_at(const BezierCurve& segment, double u) {
   const double s = (u - segment.a) / (segment.b - segment.a);
   std::vector<Vec3> b = segment.P;
@@ -165,7 +165,7 @@ void expect_graph_agrees(const ScalarCubicSpline& s, const std::vector<double>& 
 
 // --- natural -----------------------------------------------------------------------------
 
-// Seed 000 §1.6: natural end conditions S''(t_0) = S''(t_N) = 0.
+// Ch. 1 §1.6: natural end conditions S''(t_0) = S''(t_N) = 0.
 TEST(NaturalCubicSpline, SecondDerivativeIsZeroAtBothEnds) {
   std::mt19937 rng(1);  // fixed seed
   for (std::size_t count : {2u, 3u, 5u, 12u}) {
@@ -279,7 +279,7 @@ TEST(ClampedCubicSpline, ReproducesACubicPolynomial) {
 
 // --- periodic ----------------------------------------------------------------------------------
 
-// Seed 000 §1.6: periodic conditions S(t_0) = S(t_N), S'(t_0) = S'(t_N), S''(t_0) = S''(t_N).
+// Ch. 1 §1.6: periodic conditions S(t_0) = S(t_N), S'(t_0) = S'(t_N), S''(t_0) = S''(t_N).
 TEST(PeriodicCubicSpline, ValueSlopeAndCurvatureMatchAcrossTheSeam) {
   std::mt19937 rng(6);  // fixed seed
   for (int dimension : {2, 3}) {
@@ -344,19 +344,19 @@ TEST(PeriodicCubicSpline, FunctionIsPeriodicAndItsGraphMatches) {
   expect_graph_agrees(s, y);
 }
 
-// --- the seed's interpolating Bézier spline ------------------------------------------------
+// --- the lecture's interpolating Bézier spline ------------------------------------------------
 
-// Seed 000 §1.6, example: three points p_0, p_1, p_2, two segments with
+// Ch. 1 §1.6, example: three points p_0, p_1, p_2, two segments with
 // D_0 = D_1 = 1, b_0 = p_0, b_3 = p_1, b_6 = p_2; choose b_1 and b_5; solve
 //     3 b_1 = 2 d_0 + d_1,  6 b_3 = d_0 + 4 d_1 + d_2,  3 b_5 = d_1 + 2 d_2;
-// then b_2 and b_4. The seed gives no numbers; these are chosen here:
+// then b_2 and b_4. The lecture gives no numbers; these are chosen here:
 //   p = (0,0), (3,3), (6,0);  b_1 = (1,2), b_5 = (5,2).
 // By hand: d_0 = (3 b_1 - d_1)/2 and d_2 = (3 b_5 - d_1)/2, so the middle row
 // reads 6 b_3 = 3/2 (b_1 + b_5) + 3 d_1, d_1 = 2 b_3 - (b_1 + b_5)/2 = (3,4);
 // then d_0 = (0,1), d_2 = (6,1), and on the legs b_2 = (d_0 + 2 d_1)/3 = (2,3),
 // b_4 = (2 d_1 + d_2)/3 = (4,3). Checks: b_2 + b_4 = 2 b_3 (C1) and
 // b_1 - 2 b_2 + b_3 = (0,-1) = b_3 - 2 b_4 + b_5 (C2).
-TEST(BezierSplineThrough, SeedThreePointExampleByHand) {
+TEST(BezierSplineThrough, LectureThreePointExampleByHand) {
   const std::vector<double> t = {0, 1, 2};
   const std::vector<Vec3> P = {{0, 0, 0}, {3, 3, 0}, {6, 0, 0}};
   const Vec3 b1 = {1, 2, 0}, b5 = {5, 2, 0};
@@ -372,8 +372,8 @@ TEST(BezierSplineThrough, SeedThreePointExampleByHand) {
   EXPECT_EQ(spline[1].a, 1.0);
   EXPECT_EQ(spline[1].b, 2.0);
   EXPECT_EQ(spline[0].dimension, 2);
-  // Our de Boor points use D_{-1} = D_2 = 0 (the seed's general note), so the
-  // end ones are b_1 and b_5; the middle one is the seed's d_1 = (3,4).
+  // Our de Boor points use D_{-1} = D_2 = 0 (the lecture's general note), so the
+  // end ones are b_1 and b_5; the middle one is the lecture's d_1 = (3,4).
   const std::vector<Vec3> d = de_boor_points_through(t, P, b1, b5);
   ASSERT_EQ(d.size(), 3u);
   EXPECT_LE(norm(d[0] - b1), kHandTolerance);
@@ -388,12 +388,12 @@ TEST(BezierSplineThrough, SeedThreePointExampleByHand) {
   }
 }
 
-// The seed's equations 1), 2) and 3) for an interpolating cubic Bézier spline
-// (seed 000 §1.6), checked at every interior node of unequal intervals:
+// The lecture's equations 1), 2) and 3) for an interpolating cubic Bézier spline
+// (ch. 1 §1.6), checked at every interior node of unequal intervals:
 //   1) b_{3(i+1)+1} = b_{3(i+1)} + D_{i+1}/D_i (b_{3(i+1)} - b_{3(i+1)-1})        (C1)
 //   2) d_{i+1} = b_{3(i+1)-1} + D_{i+1}/D_i (b_{3(i+1)-1} - b_{3(i+1)-2})
 //   3) b_{3(i+1)+2} = b_{3(i+1)+1} + D_{i+1}/D_i (b_{3(i+1)+1} - d_{i+1})        (with 1: C2)
-TEST(BezierSplineThrough, SatisfiesTheSeedEquationsOneTwoThree) {
+TEST(BezierSplineThrough, SatisfiesTheLectureEquationsOneTwoThree) {
   std::mt19937 rng(10);  // fixed seed
   const std::vector<double> t = random_nodes(9, rng);
   const std::vector<Vec3> P = random_points(9, 3, rng);
@@ -415,8 +415,8 @@ TEST(BezierSplineThrough, SatisfiesTheSeedEquationsOneTwoThree) {
   }
 }
 
-// Two constructions of the same spline agree: the seed's power-form
-// algorithm (c_i system) and the seed's de Boor point algorithm, for natural,
+// Two constructions of the same spline agree: the lecture's power-form
+// algorithm (c_i system) and the lecture's de Boor point algorithm, for natural,
 // clamped (b_1 = p_0 + D_0 S'(t_0) / 3) and periodic ends, on unequal intervals.
 TEST(BezierSplineThrough, EqualsThePowerFormSpline) {
   std::mt19937 rng(11);  // fixed seed
@@ -441,7 +441,7 @@ TEST(BezierSplineThrough, EqualsThePowerFormSpline) {
   }
 }
 
-// The de Boor points of the seed's algorithm are the control points of the
+// The de Boor points of the lecture's algorithm are the control points of the
 // B-spline form (clamped knots: Q_0 = p_0, Q_1..Q_{N+1} = d_0..d_N, Q_{N+2} = p_N;
 // periodic: Q_1..Q_N = d_0..d_{N-1}).
 TEST(BezierSplineThrough, DeBoorPointsAreTheBsplineControlPoints) {
@@ -463,20 +463,20 @@ TEST(BezierSplineThrough, DeBoorPointsAreTheBsplineControlPoints) {
   for (std::size_t i = 0; i < cd.size(); ++i) EXPECT_LE(norm(closed.P[i + 1] - cd[i]), kExact * scale) << "d_" << i;
 }
 
-// A doubt about the seed, recorded as a test. The seed's row for the node
+// A doubt about the lecture, recorded as a test. The lecture's row for the node
 // b_{3(i+1)} multiplies the whole equation by one sum S_i = D_{i-1} + D_i + D_{i+1}:
 //   S_i (D_i + D_{i+1}) b_{3(i+1)} = D_{i+1} (D_{i+1} d_i + (D_{i-1} + D_i) d_{i+1})
 //                                  + D_i ((D_{i+1} + D_{i+2}) d_{i+1} + D_i d_{i+2}),
 // but the second bracket is S_{i+1} b_{3(i+1)+1}, so it must be divided by S_{i+1}:
 //   (D_i + D_{i+1}) b_{3(i+1)} = D_{i+1} (...) / S_i + D_i (...) / S_{i+1}.
-// Both agree when the intervals are equal (the seed's special case
+// Both agree when the intervals are equal (the lecture's special case
 // 6 b_3 = d_0 + 4 d_1 + d_2). On unequal intervals only the second holds.
-TEST(BezierSplineThrough, SeedNodeRowNeedsTwoDenominatorsOnUnequalIntervals) {
+TEST(BezierSplineThrough, LectureNodeRowNeedsTwoDenominatorsOnUnequalIntervals) {
   const std::vector<double> t = {0, 1, 3, 3.5, 6};  // D = 1, 2, 0.5, 2.5
   const std::vector<Vec3> P = {{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}, {6, 1, 0}};
   const std::vector<Vec3> d = de_boor_points_through(t, P, EndCondition::kNatural);
   auto D = [&](long i) { return i < 0 || i + 1 >= static_cast<long>(t.size()) ? 0.0 : t[i + 1] - t[i]; };
-  double seed_row_miss = 0;
+  double lecture_row_miss = 0;
   for (long i = 0; i + 2 < static_cast<long>(t.size()); ++i) {
     const std::size_t k = static_cast<std::size_t>(i);
     const Vec3 node = P[k + 1];
@@ -486,14 +486,14 @@ TEST(BezierSplineThrough, SeedNodeRowNeedsTwoDenominatorsOnUnequalIntervals) {
     const Vec3 corrected = (D(i) + D(i + 1)) * node - (left / S_i + right / S_next);
     EXPECT_LE(norm(corrected), kExact * size_of(P)) << "node " << i + 1;
     const Vec3 as_printed = S_i * (D(i) + D(i + 1)) * node - (left + right);
-    seed_row_miss = std::max(seed_row_miss, norm(as_printed));
+    lecture_row_miss = std::max(lecture_row_miss, norm(as_printed));
   }
-  EXPECT_GT(seed_row_miss, 0.1);
+  EXPECT_GT(lecture_row_miss, 0.1);
 }
 
-// Seed 000 §1.6: "If there are cusps (C0 transitions, e.g. the cross section
+// Ch. 1 §1.6: "If there are cusps (C0 transitions, e.g. the cross section
 // of a wing of an airplane) then natural splines can be used with the cusp as
-// start and end point." The seed gives no coordinates; the section here is
+// start and end point." The lecture gives no coordinates; the section here is
 // NACA 0012 (NACA Report 824: y_t = 5 tau (0.2969 sqrt x - 0.1260 x - 0.3516 x^2
 // + 0.2843 x^3 - 0.1036 x^4), tau = 0.12, the closed-trailing-edge coefficient),
 // traced from the trailing edge over the top to the nose and back underneath.

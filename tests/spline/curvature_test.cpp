@@ -4,7 +4,7 @@
 // (do Carmo, "Differential Geometry of Curves and Surfaces", §1-5): a circle of
 // radius r has curvature 1/r at any speed, a line 0, the helix
 // (a cos u, a sin u, b u) has a / (a^2 + b^2); and from the property that the
-// curvature does not depend on the parameterization (the seed cubic on [0, 1]
+// curvature does not depend on the parameterization (the lecture cubic on [0, 1]
 // and on [2, 7]).
 #include "spline_test_support.h"
 #include "spline/curvature.h"
@@ -68,7 +68,7 @@ TEST(Curvature, HelixIsAOverASquaredPlusBSquared) {
 }
 
 TEST(Curvature, DoesNotDependOnTheParameterization) {
-  // The seed cubic (seed 000 §1.6, de Casteljau example) at t = 0.6 on [0, 1]
+  // The lecture cubic (ch. 1 §1.6, de Casteljau example) at t = 0.6 on [0, 1]
   // and at the same point, t = 5, on [2, 7]: derivatives scale by 1/5 and
   // 1/25 there ("Generalization"), the curvature must not change.
   BezierCurve c;
@@ -78,7 +78,7 @@ TEST(Curvature, DoesNotDependOnTheParameterization) {
   c.b = 7;
   const std::vector<Vec3> wide = bezier_derivatives(c, 5.0, 2);
   const double k = signed_curvature(unit[1], unit[2]);
-  EXPECT_LT(k, 0);  // the seed cubic turns right (clockwise) at 0.6
+  EXPECT_LT(k, 0);  // the lecture cubic turns right (clockwise) at 0.6
   EXPECT_NEAR(signed_curvature(wide[1], wide[2]), k, kFewUlps * std::fabs(k));
   EXPECT_NEAR(curvature(wide[1], wide[2]), -k, kFewUlps * std::fabs(k));
 }

@@ -1,6 +1,6 @@
 // tests/spline/interpolation_test.cpp — common/spline/interpolation.{h,cpp}.
 //
-// Expected values come from the worked examples of seed 000 §1.6 (each test
+// Expected values come from the worked examples of ch. 1 §1.6 (each test
 // names the example) or from properties: the interpolating polynomial is
 // unique (Theorem 1), so Vandermonde, Lagrange and Newton must agree.
 #include "spline_test_support.h"
@@ -26,7 +26,7 @@ constexpr double kExact = 1e-12;  // a few thousand round-offs: "the same number
 // the spread nodes below (gaps >= 1/(2n)) the deviation from the Lagrange form
 // grows about 8x per degree: 6e-14 at n = 3, 4e-12 at n = 5, 3e-10 at n = 7
 // (2000 random cases). The Vandermonde leg therefore stops at n = 5 and allows
-// 25x the worst deviation seen there. This is the seed's point about
+// 25x the worst deviation seen there. This is the lecture's point about
 // conditioning, not slack in the code.
 constexpr double kVandermonde = 1e-10;
 constexpr int kMaxVandermondeDegree = 5;
@@ -101,8 +101,8 @@ double monomial_derivative_terms(const std::vector<double>& c, int j, double t) 
 
 // ---- Vandermonde / monomial form ------------------------------------------------
 
-TEST(Vandermonde, SeedLagrangeExampleGivesPoint1XSquaredMinusPoint6XPlus1) {
-  // seed 000 §1.6, Lagrange example 2: (0, 1), (1, 0.5), (2, 0.2) -> 0.1 x^2 - 0.6 x + 1.
+TEST(Vandermonde, LectureLagrangeExampleGivesPoint1XSquaredMinusPoint6XPlus1) {
+  // ch. 1 §1.6, Lagrange example 2: (0, 1), (1, 0.5), (2, 0.2) -> 0.1 x^2 - 0.6 x + 1.
   const std::vector<double> c = vandermonde_coefficients({0, 1, 2}, {1, 0.5, 0.2});
   ASSERT_EQ(c.size(), 3u);
   EXPECT_NEAR(c[0], 1.0, kExact);
@@ -111,14 +111,14 @@ TEST(Vandermonde, SeedLagrangeExampleGivesPoint1XSquaredMinusPoint6XPlus1) {
 }
 
 TEST(Vandermonde, MatrixRowsArePowersOfTheNodes) {
-  // seed 000 §1.6, Theorem 1: A[i][j] = t_i^j.
+  // ch. 1 §1.6, Theorem 1: A[i][j] = t_i^j.
   const auto A = vandermonde_matrix({2, -1, 0.5});
   const std::vector<std::vector<double>> expected = {{1, 2, 4}, {1, -1, 1}, {1, 0.5, 0.25}};
   EXPECT_EQ(A, expected);
 }
 
 TEST(Vandermonde, RecoversAPolynomialOfLowerDegree) {
-  // seed 000 §1.6 "Beware": n + 1 nodes give degree AT MOST n. Data from
+  // ch. 1 §1.6 "Beware": n + 1 nodes give degree AT MOST n. Data from
   // p(t) = 2 - t + 3 t^2 at 6 nodes: the higher coefficients come out 0.
   const std::vector<double> nodes = {-1, -0.3, 0.2, 0.9, 1.5, 2};
   std::vector<double> f;
@@ -130,7 +130,7 @@ TEST(Vandermonde, RecoversAPolynomialOfLowerDegree) {
 }
 
 TEST(Vandermonde, PointValuesSolveThreeSystemsWithOneMatrix) {
-  // seed 000 §1.6 "Note": a 3D curve is one system per coordinate; each
+  // ch. 1 §1.6 "Note": a 3D curve is one system per coordinate; each
   // coordinate must equal the scalar solve of that coordinate.
   std::mt19937 rng(11);
   for (int n = 0; n <= 6; ++n) {
@@ -175,8 +175,8 @@ TEST(GaussSolve, SingularMatrixIsRejected) {
 
 // ---- Lagrange ----------------------------------------------------------------------
 
-TEST(Lagrange, SeedExampleQuadraticBasisAndPolynomial) {
-  // seed 000 §1.6, Lagrange example 2 with nodes 0, 1, 2:
+TEST(Lagrange, LectureExampleQuadraticBasisAndPolynomial) {
+  // ch. 1 §1.6, Lagrange example 2 with nodes 0, 1, 2:
   // L0 = (x^2 - 3x + 2)/2, L1 = -x^2 + 2x, L2 = (x^2 - x)/2, P = 0.1 x^2 - 0.6 x + 1.
   const std::vector<double> nodes = {0, 1, 2}, f = {1, 0.5, 0.2};
   for (int k = 0; k < kSamples; ++k) {
@@ -188,8 +188,8 @@ TEST(Lagrange, SeedExampleQuadraticBasisAndPolynomial) {
   }
 }
 
-TEST(Lagrange, SeedLinearExampleIsTheLineThroughTwoPoints) {
-  // seed 000 §1.6, Lagrange example 1: P(x) = (y0 (x - x1) + y1 (x0 - x)) / (x0 - x1).
+TEST(Lagrange, LectureLinearExampleIsTheLineThroughTwoPoints) {
+  // ch. 1 §1.6, Lagrange example 1: P(x) = (y0 (x - x1) + y1 (x0 - x)) / (x0 - x1).
   const double x0 = 1, x1 = 3, y0 = 2, y1 = -4;
   for (int k = 0; k < kSamples; ++k) {
     const double x = x0 + (x1 - x0) * k / (kSamples - 1);
@@ -197,52 +197,52 @@ TEST(Lagrange, SeedLinearExampleIsTheLineThroughTwoPoints) {
   }
 }
 
-// seed 000 §1.6, "cubic Lagrange polynomials with uniform nodes t_i = i/3".
-// The seed prints L1 = -27/2 t^3 + 45/2 t^2 - 9t; that has the wrong sign
-// (it is -1 at t_1 = 1/3, see the next test). Multiplying out the seed's own
+// ch. 1 §1.6, "cubic Lagrange polynomials with uniform nodes t_i = i/3".
+// The lecture prints L1 = -27/2 t^3 + 45/2 t^2 - 9t; that has the wrong sign
+// (it is -1 at t_1 = 1/3, see the next test). Multiplying out the lecture's own
 // product t (t - 2/3)(t - 1) / ((1/3)(-1/3)(-2/3)) = (27/2) t (t - 2/3)(t - 1) gives
 // L1 = 27/2 t^3 - 45/2 t^2 + 9t, which also makes L0 + L1 + L2 + L3 = 1 and
-// L2(t) = L1(1 - t) = -27/2 t^3 + 18 t^2 - 9/2 t as the seed states.
-double seed_L0(double t) { return -4.5 * t * t * t + 9 * t * t - 5.5 * t + 1; }
-double seed_L1_sign_corrected(double t) { return 13.5 * t * t * t - 22.5 * t * t + 9 * t; }
-double seed_L2(double t) { return -13.5 * t * t * t + 18 * t * t - 4.5 * t; }
-double seed_L3(double t) { return 4.5 * t * t * t - 4.5 * t * t + t; }
+// L2(t) = L1(1 - t) = -27/2 t^3 + 18 t^2 - 9/2 t as the lecture states.
+double lecture_L0(double t) { return -4.5 * t * t * t + 9 * t * t - 5.5 * t + 1; }
+double lecture_L1_sign_corrected(double t) { return 13.5 * t * t * t - 22.5 * t * t + 9 * t; }
+double lecture_L2(double t) { return -13.5 * t * t * t + 18 * t * t - 4.5 * t; }
+double lecture_L3(double t) { return 4.5 * t * t * t - 4.5 * t * t + t; }
 
-TEST(Lagrange, SeedCubicBasisOnThirdsWithL1SignCorrected) {
+TEST(Lagrange, LectureCubicBasisOnThirdsWithL1SignCorrected) {
   const std::vector<double> nodes = {0, 1.0 / 3, 2.0 / 3, 1};
   for (int k = 0; k < kSamples; ++k) {
     const double t = static_cast<double>(k) / (kSamples - 1);
     const std::vector<double> L = lagrange_basis_all(nodes, t);
-    EXPECT_NEAR(L[0], seed_L0(t), kExact) << t;
-    EXPECT_NEAR(L[1], seed_L1_sign_corrected(t), kExact) << t;
-    EXPECT_NEAR(L[2], seed_L2(t), kExact) << t;
-    EXPECT_NEAR(L[3], seed_L3(t), kExact) << t;
-    // The seed's symmetry: L2(t) = L1(1 - t), L3(t) = L0(1 - t).
+    EXPECT_NEAR(L[0], lecture_L0(t), kExact) << t;
+    EXPECT_NEAR(L[1], lecture_L1_sign_corrected(t), kExact) << t;
+    EXPECT_NEAR(L[2], lecture_L2(t), kExact) << t;
+    EXPECT_NEAR(L[3], lecture_L3(t), kExact) << t;
+    // The lecture's symmetry: L2(t) = L1(1 - t), L3(t) = L0(1 - t).
     EXPECT_NEAR(L[2], lagrange_basis(nodes, 1, 1 - t), kExact);
     EXPECT_NEAR(L[3], lagrange_basis(nodes, 0, 1 - t), kExact);
   }
   // Monomial coefficients of L_i = the polynomial through the unit vector e_i.
-  const std::vector<std::vector<double>> seed_coefficients = {
+  const std::vector<std::vector<double>> lecture_coefficients = {
       {1, -5.5, 9, -4.5}, {0, 9, -22.5, 13.5}, {0, -4.5, 18, -13.5}, {0, 1, -4.5, 4.5}};
   for (int i = 0; i < 4; ++i) {
     std::vector<double> e(4, 0.0);
     e[static_cast<std::size_t>(i)] = 1;
     const std::vector<double> c = vandermonde_coefficients(nodes, e);
-    for (std::size_t j = 0; j < 4; ++j) EXPECT_NEAR(c[j], seed_coefficients[static_cast<std::size_t>(i)][j], kExact) << i << "," << j;
+    for (std::size_t j = 0; j < 4; ++j) EXPECT_NEAR(c[j], lecture_coefficients[static_cast<std::size_t>(i)][j], kExact) << i << "," << j;
   }
 }
 
-TEST(Lagrange, SeedPrintedL1OnThirdsHasTheWrongSign) {
-  // The seed's printed L1 at its own node t_1 = 1/3: -27/2/27 + 45/2/9 - 9/3 = -1,
+TEST(Lagrange, LecturePrintedL1OnThirdsHasTheWrongSign) {
+  // The lecture's printed L1 at its own node t_1 = 1/3: -27/2/27 + 45/2/9 - 9/3 = -1,
   // where Theorem 2 demands L1(t_1) = 1.
   const double t1 = 1.0 / 3;
-  const double seed_printed_L1 = -13.5 * t1 * t1 * t1 + 22.5 * t1 * t1 - 9 * t1;
-  EXPECT_NEAR(seed_printed_L1, -1.0, kExact);
+  const double lecture_printed_L1 = -13.5 * t1 * t1 * t1 + 22.5 * t1 * t1 - 9 * t1;
+  EXPECT_NEAR(lecture_printed_L1, -1.0, kExact);
   EXPECT_NEAR(lagrange_basis({0, 1.0 / 3, 2.0 / 3, 1}, 1, t1), 1.0, kExact);
 }
 
 TEST(Lagrange, BasisIsKroneckerDeltaAtNodesAndSumsToOne) {
-  // seed 000 §1.6, Theorem 2: L_i(t_j) = delta_ij; and sum L_i = 1 (it
+  // ch. 1 §1.6, Theorem 2: L_i(t_j) = delta_ij; and sum L_i = 1 (it
   // interpolates the constant 1).
   std::mt19937 rng(21);
   for (int c = 0; c < kRandomCases; ++c) {
@@ -264,8 +264,8 @@ TEST(Lagrange, BasisIsKroneckerDeltaAtNodesAndSumsToOne) {
 
 // ---- Newton ----------------------------------------------------------------------
 
-TEST(Newton, SeedExampleGivesOnePlusX) {
-  // seed 000 §1.6: (0, 1), (2, 3), (4, 5) -> table 1 | 3 1 | 5 1 0, p(x) = 1 + x.
+TEST(Newton, LectureExampleGivesOnePlusX) {
+  // ch. 1 §1.6: (0, 1), (2, 3), (4, 5) -> table 1 | 3 1 | 5 1 0, p(x) = 1 + x.
   NewtonInterpolant<double> p;
   p.add_node(0, 1);
   p.add_node(2, 3);
@@ -282,7 +282,7 @@ TEST(Newton, SeedExampleGivesOnePlusX) {
 }
 
 TEST(Newton, BasisVanishesAtEarlierNodes) {
-  // seed 000 §1.6: N_i(t_j) = 0 for i > j, N_i(t_i) != 0.
+  // ch. 1 §1.6: N_i(t_j) = 0 for i > j, N_i(t_i) != 0.
   const std::vector<double> nodes = {0, 0.5, 1.25, 2};
   for (int i = 0; i <= 3; ++i)
     for (int j = 0; j <= 3; ++j) {
@@ -324,7 +324,7 @@ TEST(Newton, IncrementalTableEqualsBatchTable) {
 }
 
 TEST(Newton, AddingANodeKeepsTheOldTableAndInterpolatesTheNewPoint) {
-  // seed 000 §1.6: "additional nodes can be added without having to re-compute".
+  // ch. 1 §1.6: "additional nodes can be added without having to re-compute".
   NewtonInterpolant<double> p;
   p.add_node(0, 1);
   p.add_node(2, 3);
@@ -338,7 +338,7 @@ TEST(Newton, AddingANodeKeepsTheOldTableAndInterpolatesTheNewPoint) {
 }
 
 TEST(Newton, NodeOrderDoesNotChangeThePolynomial) {
-  // seed 000 §1.6 "Note: the order of the nodes does not change the result".
+  // ch. 1 §1.6 "Note: the order of the nodes does not change the result".
   std::mt19937 rng(41);
   for (int c = 0; c < kRandomCases; ++c) {
     const int n = 1 + c % 7;
@@ -358,7 +358,7 @@ TEST(Newton, NodeOrderDoesNotChangeThePolynomial) {
 }
 
 TEST(Interpolation, NewtonLagrangeAndVandermondeAgree) {
-  // seed 000 §1.6, Theorem 1: the interpolating polynomial is unique, so the
+  // ch. 1 §1.6, Theorem 1: the interpolating polynomial is unique, so the
   // three constructions must give the same values (scalars and points).
   // Newton and Lagrange up to n = 7; Vandermonde up to kMaxVandermondeDegree.
   std::mt19937 rng(51);
@@ -410,8 +410,8 @@ TEST(Interpolation, OneNodeGivesTheConstant) {
 
 // ---- Hermite ----------------------------------------------------------------------
 
-TEST(Hermite, SeedBasisPolynomials) {
-  // seed 000 §1.6: H0 = 2t^3 - 3t^2 + 1, H0bar = t^3 - 2t^2 + t,
+TEST(Hermite, LectureBasisPolynomials) {
+  // ch. 1 §1.6: H0 = 2t^3 - 3t^2 + 1, H0bar = t^3 - 2t^2 + t,
   // H1 = -2t^3 + 3t^2, H1bar = t^3 - t^2.
   for (int k = 0; k < kSamples; ++k) {
     const double t = static_cast<double>(k) / (kSamples - 1);
@@ -423,8 +423,8 @@ TEST(Hermite, SeedBasisPolynomials) {
   }
 }
 
-TEST(Hermite, SeedBasisPropertiesAtTheEnds) {
-  // seed 000 §1.6: H_i(j) = delta_ij, H_i'(j) = 0, Hbar_i(j) = 0, Hbar_i'(j) = delta_ij.
+TEST(Hermite, LectureBasisPropertiesAtTheEnds) {
+  // ch. 1 §1.6: H_i(j) = delta_ij, H_i'(j) = 0, Hbar_i(j) = 0, Hbar_i'(j) = delta_ij.
   // At t = 0 and 1 the polynomials take small integers: exact.
   const HermiteBasis H0 = cubic_hermite_basis(0), H1 = cubic_hermite_basis(1);
   const HermiteBasis D0 = cubic_hermite_basis_derivative(0), D1 = cubic_hermite_basis_derivative(1);
@@ -446,12 +446,12 @@ TEST(Hermite, SeedBasisPropertiesAtTheEnds) {
   EXPECT_EQ(D1.H1bar, 1.0);
 }
 
-TEST(Hermite, SeedMatrixAndItInvertsTheSystemMatrix) {
-  // seed 000 §1.6: the matrix, and "determined by inverting the matrix"
+TEST(Hermite, LectureMatrixAndItInvertsTheSystemMatrix) {
+  // ch. 1 §1.6: the matrix, and "determined by inverting the matrix"
   // [[1,0,0,0], [0,1,0,0], [1,1,1,1], [0,1,2,3]].
-  const std::array<std::array<double, 4>, 4> seed = {
+  const std::array<std::array<double, 4>, 4> printed = {
       {{{1, 0, 0, 0}}, {{0, 1, 0, 0}}, {{-3, -2, 3, -1}}, {{2, 1, -2, 1}}}};
-  EXPECT_EQ(hermite_matrix(), seed);
+  EXPECT_EQ(hermite_matrix(), printed);
   const double S[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 1, 1}, {0, 1, 2, 3}};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -461,9 +461,9 @@ TEST(Hermite, SeedMatrixAndItInvertsTheSystemMatrix) {
     }
 }
 
-TEST(Hermite, GeneralSolveOnZeroOneReproducesTheSeedMatrix) {
+TEST(Hermite, GeneralSolveOnZeroOneReproducesTheLectureMatrix) {
   // Theorem 3's system for f(0), f'(0), f(1), f'(1) solved with unit data:
-  // the coefficients of H0, H0bar, H1, H1bar = the columns of the seed's matrix.
+  // the coefficients of H0, H0bar, H1, H1bar = the columns of the lecture's matrix.
   for (int col = 0; col < 4; ++col) {
     std::vector<double> e(4, 0.0);
     e[static_cast<std::size_t>(col)] = 1;
@@ -500,7 +500,7 @@ TEST(Hermite, IntervalSegmentEqualsTheGeneralSolveOnThatInterval) {
       expect_near_vec(hermite_point(d[0], d[1], d[2], d[3], t, a, b), monomial_value(coeff, t), kExact * terms);
     }
   }
-  // On [0, 1] both forms are the seed's segment.
+  // On [0, 1] both forms are the lecture's segment.
   const Vec3 p0{1, 0, 0}, m0{0, 1, 0}, p1{0, 1, 0}, m1{-1, 0, 0};
   for (int k = 0; k < kSamples; ++k) {
     const double t = static_cast<double>(k) / (kSamples - 1);
@@ -509,7 +509,7 @@ TEST(Hermite, IntervalSegmentEqualsTheGeneralSolveOnThatInterval) {
 }
 
 TEST(Hermite, GeneralSolveMeetsEveryCondition) {
-  // seed 000 §1.6, Theorem 3: p^(j)(t_i) = f_i^(j) for all given j < n_i.
+  // ch. 1 §1.6, Theorem 3: p^(j)(t_i) = f_i^(j) for all given j < n_i.
   std::mt19937 rng(71);
   std::uniform_int_distribution<int> nodes_count(1, 4), conditions(1, 3);
   for (int c = 0; c < kRandomCases; ++c) {

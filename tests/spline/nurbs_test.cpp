@@ -1,7 +1,7 @@
 // tests/spline/nurbs_test.cpp — NURBS helpers (common/spline/nurbs.cpp):
-// homogeneous points, conic sections by the seeds' r, the exact circle.
+// homogeneous points, conic sections by the lecture's r, the exact circle.
 //
-// Every expected value names its origin: seed 000 §1.6 ("Conic sections"),
+// Every expected value names its origin: ch. 1 §1.6 ("Conic sections"),
 // The NURBS Book (Piegl & Tiller, 2nd ed.) §7.5 for the circle, a closed
 // form derived in the comment, or an implicit-equation check.
 #include <gtest/gtest.h>
@@ -45,7 +45,7 @@ double dist(Vec3 a, Vec3 b) { return norm(a - b); }
 // ---- homogeneous form -----------------------------------------------------------
 
 TEST(Homogeneous, PremultipliedPointsForGlu) {
-  // DESIGN.md: GLU takes (w x, w y, w z, w).
+  // docs/glu.md: GLU takes (w x, w y, w z, w).
   BsplineCurve c;
   c.p = 2;
   c.U = {0, 0, 0, 1, 1, 1};
@@ -91,7 +91,7 @@ TEST(Homogeneous, ZeroOrNegativeWeightIsNamed) {
   EXPECT_ERROR_HAS(from_homogeneous(2, U, {}), "no control points (empty input)");
 }
 
-// ---- conic sections by r (seed 000 §1.6) ------------------------------------------
+// ---- conic sections by r (ch. 1 §1.6) ------------------------------------------
 
 /// det of an n x n matrix (Gaussian elimination with partial pivoting).
 double det(std::vector<std::vector<double>> a) {
@@ -161,7 +161,7 @@ ConicType implicit_type(const BsplineCurve& arc) {
 }
 
 TEST(Conic, ClassificationByR) {
-  // Seed 000 §1.6: r > 1/2 hyperbola, r = 1/2 parabola, r < 1/2 ellipse, r = 0 line.
+  // Ch. 1 §1.6: r > 1/2 hyperbola, r = 1/2 parabola, r < 1/2 ellipse, r = 0 line.
   EXPECT_EQ(classify_conic(0.0), ConicType::Line);
   EXPECT_EQ(classify_conic(0.25), ConicType::Ellipse);
   EXPECT_EQ(classify_conic(0.5), ConicType::Parabola);
@@ -180,7 +180,7 @@ TEST(Conic, ClassificationByR) {
 
 TEST(Conic, ImplicitEquationAgreesWithRAcrossRandomTriangles) {
   // For random control triangles and r on both sides of 1/2, the implicit
-  // conic through the arc has the type the seeds give for r.
+  // conic through the arc has the type the lecture gives for r.
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> coord(-5, 5);
   for (int trial = 0; trial < 60; ++trial) {
@@ -206,7 +206,7 @@ TEST(Conic, HalfGivesTheParabolaYEqualsXSquared) {
 
 TEST(Conic, BelowHalfGivesTheQuarterCircle) {
   // w1 = sqrt(2)/2 on (1,0), (1,1), (0,1) is the unit quarter circle (The NURBS
-  // Book §7.5); its r = w1 / (1 + w1) = 0.414... < 1/2: an ellipse, as the seeds say.
+  // Book §7.5); its r = w1 / (1 + w1) = 0.414... < 1/2: an ellipse, as the lecture says.
   const double w1 = std::sqrt(2.0) / 2;
   const double r = conic_r(w1);
   EXPECT_EQ(classify_conic(r), ConicType::Ellipse);
@@ -222,7 +222,7 @@ TEST(Conic, AboveHalfGivesTheHyperbolaXSquaredMinusYSquared) {
   // The branch x^2 - y^2 = 1 from (c, -s) to (c, s), c = cosh 1, s = sinh 1.
   // The tangents x c -/+ y s = 1 meet at the apex (1/c, 0); the shoulder
   // point (u = 1/2) is the vertex (1, 0) when (2c + 2 w1 / c) / (2 + 2 w1) = 1,
-  // i.e. w1 = c > 1, so r = c / (1 + c) > 1/2: a hyperbola, as the seeds say.
+  // i.e. w1 = c > 1, so r = c / (1 + c) > 1/2: a hyperbola, as the lecture says.
   const double c = std::cosh(1.0), s = std::sinh(1.0);
   const double r = c / (1 + c);
   EXPECT_EQ(classify_conic(r), ConicType::Hyperbola);
@@ -237,7 +237,7 @@ TEST(Conic, AboveHalfGivesTheHyperbolaXSquaredMinusYSquared) {
 }
 
 TEST(Conic, ZeroGivesTheStraightSegment) {
-  // r = 0: weight 0 on the apex; the seeds' curve is the segment P0P2, from
+  // r = 0: weight 0 on the apex; the lecture's curve is the segment P0P2, from
   // conic_point directly and from conic_arc (a polynomial with midpoint apex).
   const Vec3 P0{0, 0, 0}, P1{3, 4, 0}, P2{4, 0, 0};
   const BsplineCurve arc = conic_arc(P0, P1, P2, 0.0, 2);
@@ -253,8 +253,8 @@ TEST(Conic, ZeroGivesTheStraightSegment) {
   }
 }
 
-TEST(Conic, ArcEqualsTheSeedFormula) {
-  // conic_arc (evaluated by A4.1) and conic_point (the seed formula) agree.
+TEST(Conic, ArcEqualsTheLectureFormula) {
+  // conic_arc (evaluated by A4.1) and conic_point (the lecture formula) agree.
   const Vec3 P0{-2, 1, 0}, P1{0.5, 3, 0}, P2{3, -1, 0};
   for (double r : {0.1, 0.3, 0.5, 0.7, 0.95}) {
     const BsplineCurve arc = conic_arc(P0, P1, P2, r, 2);

@@ -1,7 +1,7 @@
 // tests/spline/parameterization_test.cpp — parameter values for points
-// (common/spline/parameterization.h; seed 000 §1.6, "Parameterizations").
+// (common/spline/parameterization.h; ch. 1 §1.6, "Parameterizations").
 //
-// Expected values are worked by hand in the comments, taken from the seed's
+// Expected values are worked by hand in the comments, taken from the lecture's
 // chordal example, or follow from a property (invariance under rigid or
 // affine maps).
 #include "spline/parameterization.h"
@@ -22,8 +22,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// Hand-computed values involve a square root or pi at most: rounding only.
 constexpr double kHandTolerance = 1e-12;
-/// The seed prints its chordal parameters with two decimals.
-constexpr double kSeedPrintedPrecision = 0.01;
+/// The lecture prints its chordal parameters with two decimals.
+constexpr double kLecturePrintedPrecision = 0.01;
 /// Invariance under a rigid or affine map, relative to t_n: rounding in the
 /// transformed coordinates, the covariance and its eigen-decomposition.
 constexpr double kInvarianceTolerance = 1e-12;
@@ -93,28 +93,28 @@ TEST(Parameters, CentripetalSumsRootsOfChordLengthsByHand) {
                     {0, r5, r5 + 1, 2 * r5 + 1, 2 * r5 + 1 + std::sqrt(r5)}, kHandTolerance);
 }
 
-// Seed 000 §1.6, "Interpolating with Bézier segments": P = (1,2), (2,1), (4,2),
+// Ch. 1 §1.6, "Interpolating with Bézier segments": P = (1,2), (2,1), (4,2),
 // (6,6) with chordal parameters t = 0, 1.42, 3.66, 8.13 over [0, 8.13].
 // Exactly: chords (1,-1), (2,1), (2,4) of lengths sqrt2, sqrt5, sqrt20, so
-// t = 0, 1.41421, 3.65028, 8.12242. The seed's values agree to its two printed
+// t = 0, 1.41421, 3.65028, 8.12242. The lecture's values agree to its two printed
 // decimals (it rounds up: 1.42, 3.66, 8.13 where 1.41, 3.65, 8.12 are nearest).
-TEST(Parameters, ChordalMatchesSeedBezierInterpolationExample) {
+TEST(Parameters, ChordalMatchesLectureBezierInterpolationExample) {
   const std::vector<Vec3> P = {{1, 2, 0}, {2, 1, 0}, {4, 2, 0}, {6, 6, 0}};
   const std::vector<double> t = parameters(P, Parameterization::kChordal);
   const double r2 = std::sqrt(2.0), r5 = std::sqrt(5.0), r20 = std::sqrt(20.0);
   expect_parameters(t, {0, r2, r2 + r5, r2 + r5 + r20}, kHandTolerance);
-  expect_parameters(t, {0, 1.42, 3.66, 8.13}, kSeedPrintedPrecision);
+  expect_parameters(t, {0, 1.42, 3.66, 8.13}, kLecturePrintedPrecision);
 }
 
-// Nielson metric of (0,0), (3,4), (3,9), the seed's 2 x 2 formula by hand
-// (seed 000 §1.6, "Nielson metric"; 1/n sums around the mean):
+// Nielson metric of (0,0), (3,4), (3,9), the lecture's 2 x 2 formula by hand
+// (ch. 1 §1.6, "Nielson metric"; 1/n sums around the mean):
 //   mean = (2, 13/3); deviations x: -2, 1, 1; y: -13/3, -1/3, 14/3.
 //   Sx2 = (4 + 1 + 1)/3 = 2;  Sy2 = (169 + 1 + 196)/27 = 122/9;
 //   Sxy = (26/3 - 1/3 + 14/3)/3 = 13/3;  D = 2 * 122/9 - 169/9 = 25/3.
 //   M = [Sy2 -Sxy; -Sxy Sx2] / D = [122/75 -13/25; -13/25 6/25].
-// (The seed prints +Sxy/D top right; a symmetric inverse has -Sxy/D in both
+// (The lecture prints +Sxy/D top right; a symmetric inverse has -Sxy/D in both
 // corners, and only that makes the metric affine invariant, as tested below.)
-TEST(NielsonMetric, SeedFormulaByHandForThreePoints) {
+TEST(NielsonMetric, LectureFormulaByHandForThreePoints) {
   const std::vector<double> M = nielson_metric({{0, 0, 0}, {3, 4, 0}, {3, 9, 0}});
   ASSERT_EQ(M.size(), 9u);
   EXPECT_NEAR(M[0], 122.0 / 75, kHandTolerance);
@@ -167,7 +167,7 @@ TEST(Parameters, FoleyOnTheUnitSquareByHand) {
                     kHandTolerance);
 }
 
-// Collinear points (0,0), (1,0), (3,0): the covariance has rank 1 (the seed's
+// Collinear points (0,0), (1,0), (3,0): the covariance has rank 1 (the lecture's
 // D is 0); the metric works along the line. Mean x = 4/3, variance
 // (16/9 + 1/9 + 25/9)/3 = 14/9, so a length L measures L / sqrt(14/9) = 3L/sqrt14:
 // t = 0, 3/sqrt14, 9/sqrt14. Foley adds nothing on a straight run
@@ -224,7 +224,7 @@ TEST(Parameters, ChordalIsInvariantUnderRotationAndTranslation) {
   }
 }
 
-// The seed's point about the Nielson metric (seed 000 §1.6): it is affine
+// The lecture's point about the Nielson metric (ch. 1 §1.6): it is affine
 // invariant, so a shear and unequal scaling of the data leave the Nielson
 // and Foley parameters unchanged, while chordal parameters (even rescaled to
 // [0, 1]) change.

@@ -1,6 +1,6 @@
 // tests/spline/surface_test.cpp — tensor-product surfaces (common/spline/surface.cpp).
 //
-// Expected values come from the seeds (seed 000 §1.6/§1.7, seed 004), from
+// Expected values come from the lecture (ch. 1 §1.6/§1.7, notes "Higher Order Surfaces"), from
 // The NURBS Book, or from properties that hold for every surface (partition of
 // unity, corner interpolation, convex hull, affine invariance, agreement of two
 // independent evaluation routes, central finite differences). Random surfaces
@@ -28,10 +28,10 @@ namespace {
 // ---- tolerances -------------------------------------------------------------------
 /// Two routes to the same value on coordinates of size ~10 (round-off only).
 constexpr double kSameValue = 1e-11;
-/// The seed's Bézier interpolation example solves a 2 x 2 system whose
+/// The lecture's Bézier interpolation example solves a 2 x 2 system whose
 /// coefficients it rounds to two decimals (0.36, 0.07, 0.41, 0.33): that moves
 /// its printed b_2 by 0.09 from the exact solution for its own t values.
-constexpr double kSeedExampleRounding = 0.1;
+constexpr double kLectureExampleRounding = 0.1;
 /// Central differences, step kStep: truncation O(h^2) plus round-off eps/h,
 /// relative to the size of the derivative.
 constexpr double kStep = 1e-5;
@@ -124,12 +124,12 @@ BsplineSurface Sphere(double R) {
   return revolved_surface(profile);
 }
 
-// ==== seed examples =====================================================================
+// ==== lecture examples =====================================================================
 
-// seed 000 §1.6 "Example (de Casteljau algorithm)": polygon (0,0), (2,4.5),
+// ch. 1 §1.6 "Example (de Casteljau algorithm)": polygon (0,0), (2,4.5),
 // (8.5,6.5), (11,2) at t = 0.6. Extruded along v (b_ij = (x_i, y_i, j)), the
-// surface's u-steps repeat the seed's table and X(0.6, v) = (X(0.6), v).
-BezierSurface SeedExtrusion() {
+// surface's u-steps repeat the lecture's table and X(0.6, v) = (X(0.6), v).
+BezierSurface LectureExtrusion() {
   const Vec3 polygon[] = {{0, 0, 0}, {2, 4.5, 0}, {8.5, 6.5, 0}, {11, 2, 0}};
   BezierSurface s;
   s.n = 3;
@@ -141,37 +141,37 @@ BezierSurface SeedExtrusion() {
   return s;
 }
 
-TEST(BezierSurfaceDeCasteljau, SeedExampleTableAlongU) {
-  const BezierSurfaceConstruction c = de_casteljau(SeedExtrusion(), 0.6, 0.25);
+TEST(BezierSurfaceDeCasteljau, LectureExampleTableAlongU) {
+  const BezierSurfaceConstruction c = de_casteljau(LectureExtrusion(), 0.6, 0.25);
   ASSERT_EQ(c.nets.size(), 5u);  // 3 steps along u, 1 along v
-  // The seed's table, column by column (seed 000 §1.6), in row 0 of each net (z = 0).
+  // The lecture's table, column by column (ch. 1 §1.6), in row 0 of each net (z = 0).
   EXPECT_TRUE(Near(c.nets[1].point(0, 0), {1.2, 2.7, 0}, kSameValue));
   EXPECT_TRUE(Near(c.nets[1].point(1, 0), {5.9, 5.7, 0}, kSameValue));
   EXPECT_TRUE(Near(c.nets[1].point(2, 0), {10, 3.8, 0}, kSameValue));
   EXPECT_TRUE(Near(c.nets[2].point(0, 0), {4.02, 4.5, 0}, kSameValue));
   EXPECT_TRUE(Near(c.nets[2].point(1, 0), {8.36, 4.56, 0}, kSameValue));
-  // The seed prints X(0.6) = (6.63, 4.54), but its own last step gives
+  // The lecture prints X(0.6) = (6.63, 4.54), but its own last step gives
   // 0.4 (4.02, 4.5) + 0.6 (8.36, 4.56) = (6.624, 4.536): 6.624 is 6.62 to
   // two decimals. The exact value is the one to trust.
   EXPECT_TRUE(Near(c.point, {6.624, 4.536, 0.25}, kSameValue));
-  // X'(0.6) = 3 (b_3^2 - b_2^2) = (13.02, 0.18), seed 000 §1.6 "Example (continued)".
+  // X'(0.6) = 3 (b_3^2 - b_2^2) = (13.02, 0.18), ch. 1 §1.6 "Example (continued)".
   EXPECT_TRUE(Near(c.partials.Su, {13.02, 0.18, 0}, kSameValue));
   EXPECT_TRUE(Near(c.partials.Sv, {0, 0, 1}, kSameValue));
   EXPECT_TRUE(Near(c.partials.Suv, {0, 0, 0}, kSameValue));
 }
 
-TEST(BezierSurfaceDerivs, SeedExampleSecondDerivativeAlongU) {
-  // X''(0.6) = 6 (b_3^1 - 2 b_2^1 + b_1^1) = (-3.6, -29.4) (seed 000 §1.6).
-  const auto D = surface_derivs(SeedExtrusion(), 0.6, 0.7, 2);
+TEST(BezierSurfaceDerivs, LectureExampleSecondDerivativeAlongU) {
+  // X''(0.6) = 6 (b_3^1 - 2 b_2^1 + b_1^1) = (-3.6, -29.4) (ch. 1 §1.6).
+  const auto D = surface_derivs(LectureExtrusion(), 0.6, 0.7, 2);
   EXPECT_TRUE(Near(D[0][0], {6.624, 4.536, 0.7}, kSameValue));
   EXPECT_TRUE(Near(D[1][0], {13.02, 0.18, 0}, kSameValue));
   EXPECT_TRUE(Near(D[2][0], {-3.6, -29.4, 0}, kSameValue));
   EXPECT_TRUE(Near(D[0][2], {0, 0, 0}, kSameValue));  // linear along v
 }
 
-TEST(BezierSurfaceDerivs, SeedCornerFormulasOfBicubicPatch) {
-  // seed 000 §1.7 "Example: bicubic Bézier surface": Xs(0,0) = 3 (b10 - b00),
-  // Xt(0,0) = 3 (b01 - b00), Xst(0,0) = 9 (b11 - b10 - b01 + b00); seed 004
+TEST(BezierSurfaceDerivs, LectureCornerFormulasOfBicubicPatch) {
+  // ch. 1 §1.7 "Example: bicubic Bézier surface": Xs(0,0) = 3 (b10 - b00),
+  // Xt(0,0) = 3 (b01 - b00), Xst(0,0) = 9 (b11 - b10 - b01 + b00); notes "Higher Order Surfaces"
   // writes the twist n^2 (p00 - p01 - p10 + p11). The other corners mirror it.
   std::mt19937 rng(1701);
   for (int trial = 0; trial < 20; ++trial) {
@@ -195,11 +195,11 @@ TEST(BezierSurfaceDerivs, SeedCornerFormulasOfBicubicPatch) {
   }
 }
 
-TEST(InterpolatingBezierSurface, SeedCurveExampleExtrudedAlongV) {
-  // seed 000 §1.6 "Interpolating with Bézier segments": P = (1,2), (2,1), (4,2),
+TEST(InterpolatingBezierSurface, LectureCurveExampleExtrudedAlongV) {
+  // ch. 1 §1.6 "Interpolating with Bézier segments": P = (1,2), (2,1), (4,2),
   // (6,6) at the chordal t = 0, 1.42, 3.66, 8.13 gives b_1 = (2.5, -1.51),
   // b_2 = (6.86, 5.27). With two rows (z = 0 and z = 1) at v = 0, 1 the
-  // surface's first step is the seed's system, and its net repeats the answer.
+  // surface's first step is the lecture's system, and its net repeats the answer.
   const Vec3 P[] = {{1, 2, 0}, {2, 1, 0}, {4, 2, 0}, {6, 6, 0}};
   std::vector<Vec3> grid;
   for (const Vec3& p : P) {
@@ -212,16 +212,16 @@ TEST(InterpolatingBezierSurface, SeedCurveExampleExtrudedAlongV) {
   EXPECT_EQ(s.a, 0);
   EXPECT_EQ(s.b, 8.13);
   EXPECT_TRUE(Near(s.point(0, 0), {1, 2, 0}, kSameValue));
-  EXPECT_TRUE(Near(s.point(1, 0), {2.5, -1.51, 0}, kSeedExampleRounding));
-  EXPECT_TRUE(Near(s.point(2, 0), {6.86, 5.27, 0}, kSeedExampleRounding));
-  EXPECT_TRUE(Near(s.point(2, 1), {6.86, 5.27, 1}, kSeedExampleRounding));
+  EXPECT_TRUE(Near(s.point(1, 0), {2.5, -1.51, 0}, kLectureExampleRounding));
+  EXPECT_TRUE(Near(s.point(2, 0), {6.86, 5.27, 0}, kLectureExampleRounding));
+  EXPECT_TRUE(Near(s.point(2, 1), {6.86, 5.27, 1}, kLectureExampleRounding));
   EXPECT_TRUE(Near(s.point(3, 0), {6, 6, 0}, kSameValue));
 }
 
 // ==== Bézier surfaces: properties over random nets ========================================
 
 TEST(BezierSurface, DeCasteljauEqualsBernsteinEqualsClampedBspline) {
-  // Three routes to one point: seed 000 §1.7 de Casteljau (both orders), the
+  // Three routes to one point: ch. 1 §1.7 de Casteljau (both orders), the
   // Bernstein sum, and A3.5 on the patch as a B-spline with knots a^(n+1) b^(n+1).
   std::mt19937 rng(42);
   for (int trial = 0; trial < 60; ++trial) {
@@ -238,7 +238,7 @@ TEST(BezierSurface, DeCasteljauEqualsBernsteinEqualsClampedBspline) {
   }
 }
 
-TEST(BezierSurface, ConstructionNetsHaveTheSeedsShapes) {
+TEST(BezierSurface, ConstructionNetsHaveTheLecturesShapes) {
   std::mt19937 rng(7);
   const BezierSurface s = RandomBezier(rng, 3, 2);
   const BezierSurfaceConstruction cu = de_casteljau(s, s.a + 0.3 * (s.b - s.a), s.c + 0.6 * (s.d - s.c));
@@ -261,7 +261,7 @@ TEST(BezierSurface, PartitionOfUnityCornersAndConvexHull) {
   std::mt19937 rng(3);
   for (int trial = 0; trial < 40; ++trial) {
     BezierSurface s = RandomBezier(rng, UniformInt(rng, 1, 5), UniformInt(rng, 1, 5));
-    // Corners of the net are corners of the surface (seed 000 §1.7, property 3).
+    // Corners of the net are corners of the surface (ch. 1 §1.7, property 3).
     EXPECT_TRUE(Near(surface_point(s, s.a, s.c), s.point(0, 0), kSameValue));
     EXPECT_TRUE(Near(surface_point(s, s.b, s.c), s.point(s.n, 0), kSameValue));
     EXPECT_TRUE(Near(surface_point(s, s.a, s.d), s.point(0, s.m), kSameValue));
@@ -286,7 +286,7 @@ TEST(BezierSurface, PartitionOfUnityCornersAndConvexHull) {
 }
 
 TEST(BezierSurface, AffineInvariance) {
-  // seed 004 "Affine Invariance": Phi(sum p_ij b_i b_j) = sum Phi(p_ij) b_i b_j.
+  // notes "Higher Order Surfaces", "Affine Invariance": Phi(sum p_ij b_i b_j) = sum Phi(p_ij) b_i b_j.
   std::mt19937 rng(11);
   const double A[3][3] = {{0.8, -1.2, 0.3}, {0.5, 2.0, -0.7}, {-1.1, 0.4, 1.5}};
   const Vec3 t{3, -2, 7};
@@ -320,8 +320,8 @@ TEST(BezierSurface, PartialsMatchCentralDifferencesAndEachOther) {
       EXPECT_TRUE(RelNear(d.Su, fu, kFiniteDifference));
       EXPECT_TRUE(RelNear(d.Sv, fv, kFiniteDifference));
       EXPECT_TRUE(RelNear(d.Suv, fuv, kFiniteDifference));
-      // The seeds' de Casteljau partials and the Delta^{kl} derivative
-      // surfaces (seed 000 §1.7) give the same vectors.
+      // The lecture's de Casteljau partials and the Delta^{kl} derivative
+      // surfaces (ch. 1 §1.7) give the same vectors.
       const SurfacePartials dc = de_casteljau(s, u, v).partials;
       EXPECT_TRUE(RelNear(dc.Su, d.Su, kSameValue));
       EXPECT_TRUE(RelNear(dc.Sv, d.Sv, kSameValue));
@@ -345,13 +345,13 @@ TEST(BezierSurface, NormalsAreUnitAndOrthogonalToTheTangents) {
       EXPECT_NEAR(norm(N), 1, kUnitLength);
       EXPECT_NEAR(dot(N, normalized(d.Su)), 0, kOrthogonal);
       EXPECT_NEAR(dot(N, normalized(d.Sv)), 0, kOrthogonal);
-      EXPECT_GT(dot(N, cross(d.Su, d.Sv)), 0);  // N = (Xs x Xt) / |Xs x Xt| (seed 000 §1.7)
+      EXPECT_GT(dot(N, cross(d.Su, d.Sv)), 0);  // N = (Xs x Xt) / |Xs x Xt| (ch. 1 §1.7)
     }
   }
 }
 
 TEST(BezierSurface, IsoCurvesLieOnTheSurface) {
-  // seed 000 §1.7: X(s, t0) and X(s0, t) are Bézier curves of degree n and m.
+  // ch. 1 §1.7: X(s, t0) and X(s0, t) are Bézier curves of degree n and m.
   std::mt19937 rng(13);
   for (int trial = 0; trial < 20; ++trial) {
     const BezierSurface s = RandomBezier(rng, UniformInt(rng, 1, 5), UniformInt(rng, 1, 5));
@@ -364,7 +364,7 @@ TEST(BezierSurface, IsoCurvesLieOnTheSurface) {
       EXPECT_TRUE(Near(bezier_point(cu, v), surface_point(s, u0, v), kSameValue));
       EXPECT_TRUE(Near(bezier_point(cv, u), surface_point(s, u, v0), kSameValue));
     }
-    // Edge curves are the edge rows of the net (seed 000 §1.7, property 4).
+    // Edge curves are the edge rows of the net (ch. 1 §1.7, property 4).
     const BezierCurve edge = iso_curve_v(s, s.c);
     for (int i = 0; i <= s.n; ++i) EXPECT_TRUE(Near(edge.P[static_cast<std::size_t>(i)], s.point(i, 0), kSameValue));
   }
@@ -384,9 +384,9 @@ TEST(BezierSurface, DegreeZeroDirectionIsACurve) {
   EXPECT_TRUE(Near(d.Sv, bezier_derivative_at(row, v), kSameValue));
 }
 
-// ==== C0 / C1 / C2 continuation (seed 000 §1.7 "Spline surfaces") ===========================
+// ==== C0 / C1 / C2 continuation (ch. 1 §1.7 "Spline surfaces") ===========================
 
-TEST(ContinuationRows, SatisfyTheSeedsConditions) {
+TEST(ContinuationRows, SatisfyTheLecturesConditions) {
   std::mt19937 rng(23);
   const BezierSurface a = RandomBezier(rng, 3, 3);
   const double ds0 = a.b - a.a, ds1 = 0.7;
@@ -452,7 +452,7 @@ TEST(JoinedPatch, RejectsMismatchedDegreesAndEdges) {
 
 // ==== interpolating Bézier surfaces and Lagrange surfaces ==================================
 
-// ==== Zero and constant twist (seed 000 §1.7 "The twist vector") =======================
+// ==== Zero and constant twist (ch. 1 §1.7 "The twist vector") =======================
 
 BezierCurve RandomEdge(std::mt19937& rng, int degree, Vec3 start, double a, double b) {
   BezierCurve e;
@@ -473,7 +473,7 @@ TEST(ConstantTwistPatch, TwistIsTheGivenVectorEverywhereAndTheEdgesAreCopied) {
     const BezierSurface s = constant_twist_patch(eu, ev, twist);
     for (int i = 0; i <= s.n; ++i) EXPECT_EQ(s.point(i, 0), eu.P[static_cast<std::size_t>(i)]);
     for (int j = 0; j <= s.m; ++j) EXPECT_EQ(s.point(0, j), ev.P[static_cast<std::size_t>(j)]);
-    // Seed: X_st(0,0) = n m (b_11 - b_10 - b_01 + b_00) / interval lengths, at every (u, v).
+    // Lecture: X_st(0,0) = n m (b_11 - b_10 - b_01 + b_00) / interval lengths, at every (u, v).
     for (int k = 0; k <= 10; ++k)
       for (int l = 0; l <= 10; ++l) {
         const double u = a + (b - a) * k / 10, v = c + (d - c) * l / 10;
@@ -501,7 +501,7 @@ TEST(ConstantTwistPatch, ErrorsNameTheCornersAndDegrees) {
 }
 
 TEST(InterpolatingBezierSurface, ReproducesItsGridAndEqualsTheLagrangeSurface) {
-  // seed 000 §1.7 "Proof": f(s_k, t_l) = p_kl. The interpolating polynomial is
+  // ch. 1 §1.7 "Proof": f(s_k, t_l) = p_kl. The interpolating polynomial is
   // unique, so the Lagrange surface through the same grid is the same surface.
   std::mt19937 rng(37);
   for (int trial = 0; trial < 30; ++trial) {
@@ -529,7 +529,7 @@ TEST(InterpolatingBezierSurface, ReproducesItsGridAndEqualsTheLagrangeSurface) {
 }
 
 TEST(LagrangeSurface, InterpolatesItsGrid) {
-  // seed 000 §1.7 "Lagrange surfaces": f(s_i, t_j) = c_ij (L_i(s_k) = delta_ik).
+  // ch. 1 §1.7 "Lagrange surfaces": f(s_i, t_j) = c_ij (L_i(s_k) = delta_ik).
   std::mt19937 rng(109);
   LagrangeSurface L{{-1, 0.5, 2, 2.25}, {0, 1, 3}, {}};
   for (int k = 0; k < 12; ++k) L.c.push_back(RandomPoint(rng));
@@ -539,9 +539,9 @@ TEST(LagrangeSurface, InterpolatesItsGrid) {
 }
 
 TEST(LagrangeSurface, RowAndColumnCurvesLieOnTheSurface) {
-  // seed 000 §1.7: c_j(s) = sum_i c_ij L_i(s) and c-bar_i(t) are part of the surface.
+  // ch. 1 §1.7: c_j(s) = sum_i c_ij L_i(s) and c-bar_i(t) are part of the surface.
   std::mt19937 rng(41);
-  LagrangeSurface L{{0, 1, 2, 3}, {0, 0.5, 1}, {}};  // the seeds' example size m = 3, n = 2
+  LagrangeSurface L{{0, 1, 2, 3}, {0, 0.5, 1}, {}};  // the lecture's example size m = 3, n = 2
   for (int k = 0; k < 12; ++k) L.c.push_back(RandomPoint(rng));
   for (int j = 0; j < 3; ++j) {
     std::vector<Vec3> column;
@@ -567,7 +567,7 @@ HermitePatch RandomHermite(std::mt19937& rng) {
 }
 
 TEST(HermitePatch, ReproducesCornersPartialsAndTwists) {
-  // seed 000 §1.7 "Hermite surfaces": the patch interpolates the corner points,
+  // ch. 1 §1.7 "Hermite surfaces": the patch interpolates the corner points,
   // the partial derivatives and the twist vectors.
   std::mt19937 rng(43);
   for (int trial = 0; trial < 20; ++trial) {
@@ -606,7 +606,7 @@ TEST(HermitePatch, EqualsItsBezierFormAndFiniteDifferences) {
 }
 
 TEST(HermiteLagrangeSurface, InterpolatesItsHermiteAndLagrangeCurves) {
-  // seed 000 §1.7 "Hermite–Lagrange tensor product": along u the cubic Hermite
+  // ch. 1 §1.7 "Hermite–Lagrange tensor product": along u the cubic Hermite
   // segment of each node v_j, along v the Lagrange curves through p0 and p1.
   std::mt19937 rng(53);
   HermiteLagrangeSurface s;
@@ -976,7 +976,7 @@ TEST(SurfaceEvaluator, TessellatedSphereHasVerticesAtTheRadius) {
 }
 
 TEST(ToHomogeneous, PremultipliesByTheWeight) {
-  BsplineSurface s = to_bspline(SeedExtrusion());
+  BsplineSurface s = to_bspline(LectureExtrusion());
   s.w = {1, 2, 3, 4, 5, 6, 7, 8};
   const std::vector<Vec4> Pw = to_homogeneous(s);
   ASSERT_EQ(Pw.size(), 8u);

@@ -35,12 +35,12 @@ constexpr int kDenseSamples = 10000;
 constexpr double kUnitLengthEps = 1e-12;
 /// Vertex normals come from the evaluator: they match the analytic normal up to round-off.
 constexpr double kVertexNormalAngleDegrees = 1e-6;
-/// The tilt DESIGN.md counts for GLU's slivers: faces more than 20° off the surface.
+/// The tilt docs/glu.md counts for GLU's slivers: faces more than 20° off the surface.
 constexpr double kSliverTiltDegrees = 20;
 /// Round-off allowance when comparing a measured error or area with its bound
 /// (sums of a few thousand products of numbers near 1).
 constexpr double kRoundOff = 1e-12;
-/// DESIGN.md: GLU's meshes of coarsely trimmed bicubics were 5-23 % too large;
+/// docs/glu.md: GLU's meshes of coarsely trimmed bicubics were 5-23 % too large;
 /// a tessellator that honours its tolerance must stay far below that.
 constexpr double kMaxTrimmedAreaError = 0.01;
 /// The NURBS circle hole of examples/trimmed_nurbs_surface.json is flattened
@@ -51,7 +51,7 @@ constexpr double kHolePolygonMinShare = 0.9;
 
 Vec3 unit_circle(double t) { return {std::cos(t), std::sin(t), 0}; }
 
-/// A cubic Bézier from its four points (Bernstein form, seed 004).
+/// A cubic Bézier from its four points (Bernstein form, notes "Higher Order Surfaces").
 struct Cubic {
   Vec3 p0, p1, p2, p3;
   Vec3 operator()(double t) const {
@@ -552,7 +552,7 @@ TEST(TessellateSurface, SpherePatchAreaWithinToleranceBound) {
   const double full = R * R * (u1 - u0) * (std::sin(v1) - std::sin(v0));
   const double holed = full - R * R * (a1 - a0) * (std::sin(b1) - std::sin(b0));
   // The outer loop runs along the domain edge (a hole needs an outer loop);
-  // the hole is a 5-point polyline, the coarse kind that makes GLU fan slivers (DESIGN.md).
+  // the hole is a 5-point polyline, the coarse kind that makes GLU fan slivers (docs/glu.md).
   const std::vector<TrimLoop> trims{square_loop(u0, v0, u1, v1, true), square_loop(a0, b0, a1, b1, false)};
   for (double tol : {1e-2, 1e-3, 1e-4}) {
     const Mesh plain = tessellate_surface(sphere(R), {u0, u1, v0, v1}, TessellationOptions::adaptive(tol));
@@ -571,7 +571,7 @@ TEST(TessellateSurface, SpherePatchAreaWithinToleranceBound) {
 }
 
 TEST(TessellateSurface, CoarsePolylineTrimMakesNoSlivers) {
-  // DESIGN.md: a 5-point polyline square trim on a bicubic made GLU fan long
+  // docs/glu.md: a 5-point polyline square trim on a bicubic made GLU fan long
   // slivers across the region (area 5-23 % too large, faces tilted > 20°).
   // Here the trim edges are refined and the cells cut, so every triangle is
   // within the tolerance, none tilts by 20°, and the area matches the
@@ -836,7 +836,7 @@ TEST(TessellatePatches, TrimNearSharedEdgeKeepsEdgeVertices) {
   print("bicubic halves, hole near the shared edge, tol 1e-4", both, r);
 }
 
-/// The bicubic's net split at u = 1/2 by de Casteljau (seed 004, "midpoint
+/// The bicubic's net split at u = 1/2 by de Casteljau (notes "Higher Order Surfaces", "midpoint
 /// subdivision"): two separately written Bézier patches over [0, 1]^2 each.
 Bicubic half_of(const Bicubic& b, bool right) {
   Bicubic h;
@@ -876,7 +876,7 @@ TEST(TessellatePatches, SubdividedBezierHalvesWeldWithoutCracks) {
   }
 }
 
-// ---- contour_segments: iso-curves on a mesh (seed 000 §1.7 "Iso-curves") ----------------
+// ---- contour_segments: iso-curves on a mesh (ch. 1 §1.7 "Iso-curves") ----------------
 
 double segment_length(const std::array<Vec3, 2>& s) { return norm(s[1] - s[0]); }
 

@@ -215,7 +215,7 @@ TEST(SolveTridiagonal, Vec3RightHandSideSolvesEachComponent) {
   }
 }
 
-// The spline matrices (seed 000 §1.6): D_{i-1}, 2 (D_{i-1} + D_i), D_i. Large
+// The spline matrices (ch. 1 §1.6): D_{i-1}, 2 (D_{i-1} + D_i), D_i. Large
 // systems stay accurate: the residual A x - rhs is at rounding level.
 TEST(SolveCyclicTridiagonal, SplineMatrixOfThousandRowsHasTinyResidual) {
   std::mt19937 rng(3);  // fixed seed

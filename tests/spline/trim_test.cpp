@@ -58,7 +58,7 @@ std::string message_of(F f) {
   return "";
 }
 
-// ---- validation: each rule GLU enforces (DESIGN.md), with the exact message ----
+// ---- validation: each rule GLU enforces (docs/glu.md), with the exact message ----
 
 TEST(TrimLoop, ClockwiseOuterLoopIsRejected) {
   // GLU keeps the left side, so an outer loop must run counter-clockwise.
