@@ -38,7 +38,7 @@ std::vector<GLfloat> glu_points(const std::vector<spline::Vec3>& points, int coo
 /// points on each edge: `points` and per_edge - 1 more evenly between each
 /// two. GLU draws every gluPwlCurve edge as a straight chord across the
 /// surface and never refines it, so a coarse loop makes long slivers fanned
-/// from its corners (measured: docs/glu.md; lab 23's slivers). 1 keeps the
+/// from its corners (measured: docs/glu.md; lab 25's slivers). 1 keeps the
 /// points as they are.
 std::vector<GLfloat> densified_pwl(const std::vector<spline::Vec2>& points, int per_edge);
 

@@ -99,7 +99,7 @@ std::vector<gllab::GluTrimLoop> loops_of(const State& s, bool reversed_outer) {
   if (reversed_outer) std::reverse(outer.begin(), outer.end());
   return {{{GLU_MAP1_TRIM_2, gllab::glu_points(outer, 2), 2, 3, kOuterKnots}},     // outer boundary
           {{GLU_MAP1_TRIM_3, circle(0.27, 0.7, 0.13, true), 3, 3, kCircleKnots}},  // round hole
-          {{GLU_MAP1_TRIM_2, {&kArch[0][0], &kArch[4][0]}, 2, 4, kKnots},       // trim.c's
+          {{GLU_MAP1_TRIM_2, {&kArch[0][0], &kArch[0][0] + 4 * 2}, 2, 4, kKnots},  // trim.c's
            {GLU_MAP1_TRIM_2, gllab::densified_pwl(kArchBase, n), 2}},             // hole
           {{GLU_MAP1_TRIM_2, gllab::densified_pwl(kRectangle, n), 2}},            // rectangle
           {{GLU_MAP1_TRIM_3, circle(0.5, 0.285, 0.1, false), 3, 3, kCircleKnots}}};  // its island
