@@ -3,6 +3,8 @@
 # make directly.
 #
 #   make             configure (Release) and build into build/
+#   make target TARGETS="15_bspline_curves"   build only these programs and
+#                    what they link (./lab open and ./lab render use it)
 #   make run         grade this build: render every lab view headless, compare
 #                    with reference_images/, print a table; the report (renders,
 #                    heat maps, results.json/.csv) goes to out/index.html
@@ -24,7 +26,7 @@ SANITIZE_BUILD ?= build-sanitize
 BENCH_BUILD ?= build-bench
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build run grade test references calibration sanitize bench clean
+.PHONY: all build target run grade test references calibration sanitize bench clean
 
 all: build
 
@@ -33,6 +35,9 @@ $(BUILD)/CMakeCache.txt:
 
 build: $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
+
+target: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target $(TARGETS)
 
 run: build
 	$(BUILD)/bin/labgrade --build $(BUILD) --report out

@@ -31,7 +31,6 @@
 #include "bench_config.h"
 #include "bench_data.h"
 #include "peers.h"
-#include "prototype_eval.h"
 #include "spline/bspline.h"
 #include "spline/cubic_spline.h"
 #include "spline/surface.h"
@@ -43,7 +42,6 @@ using gllab::bench::BenchData;
 using gllab::bench::Points;
 using gllab::spline::Vec3;
 namespace sp = gllab::spline;
-namespace proto = gllab::bench::prototype;
 
 // ---- agreement tolerances (relative to the largest reference value) ---------
 // Double-precision peers evaluate the same formulas in another order: a few
@@ -57,13 +55,12 @@ constexpr double kFloatNormalTolerance = 1e-3;   // 0.06 degrees
 // relative to max |S''|.
 constexpr double kSplineC2Tolerance = 1e-9;
 
-enum class Role { kOwn, kPeer, kPrototype };
+enum class Role { kOwn, kPeer };
 
 const char* role_name(Role role) {
   switch (role) {
     case Role::kOwn: return "own";
     case Role::kPeer: return "peer";
-    case Role::kPrototype: return "prototype";
   }
   return "?";
 }
@@ -221,18 +218,6 @@ void add_curve_entries(const BenchData& d, const Peers& peers) {
     add_skipped("curve_points", "occt_geom_D0", peers.occt_missing);
     add_skipped("curve_points", "occt_adaptor_D0", peers.occt_missing);
   }
-  add("curve_points", "prototype_P", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_plain(c, u, e.out);
-    return u.size();
-  });
-  add("curve_points", "prototype_R", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_reciprocal(c, u, e.out);
-    return u.size();
-  });
-  add("curve_points", "prototype_T", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_taylor(c, u, e.out);
-    return u.size();
-  });
 
   // curve_derivs -----------------------------------------------------------------
   add("curve_derivs", "own_per_point", Role::kOwn, [&c, &u](Entry& e) {
@@ -275,18 +260,6 @@ void add_curve_entries(const BenchData& d, const Peers& peers) {
     add_skipped("curve_derivs", "occt_geom_D1", peers.occt_missing);
     add_skipped("curve_derivs", "occt_adaptor_D1", peers.occt_missing);
   }
-  add("curve_derivs", "prototype_P", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_plain(c, u, e.out, e.aux);
-    return u.size();
-  });
-  add("curve_derivs", "prototype_R", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_reciprocal(c, u, e.out, e.aux);
-    return u.size();
-  });
-  add("curve_derivs", "prototype_T", Role::kPrototype, [&c, &u](Entry& e) {
-    proto::curve_points_taylor(c, u, e.out, e.aux);
-    return u.size();
-  });
 }
 
 void add_surface_entries(const BenchData& d, const Peers& peers) {
@@ -370,10 +343,6 @@ void add_surface_entries(const BenchData& d, const Peers& peers) {
     add_skipped("surface_normals", "occt_geom_D1", peers.occt_missing);
     add_skipped("surface_normals", "occt_adaptor_D1", peers.occt_missing);
   }
-  add("surface_normals", "prototype_grid", Role::kPrototype, [&s, &us, &vs](Entry& e) {
-    proto::surface_grid(s, us, vs, e.out, e.aux);
-    return us.size() * vs.size();
-  });
 }
 
 // Output buffers, sized once outside the timing: GLU's to twice its
@@ -611,12 +580,11 @@ void print_summary() {
 
   std::printf("\nTarget: own batched >= 3x the fastest peer.\n");
   for (const char* t : {"curve_points", "curve_derivs", "surface_normals"}) {
-    const Entry *best = nullptr, *own = nullptr, *proto_best = nullptr;
+    const Entry *best = nullptr, *own = nullptr;
     for (auto& ep : g_entries) {
       const Entry& e = *ep;
       if (e.task != t || e.rate <= 0) continue;
       if (e.role == Role::kPeer && (!best || e.rate > best->rate)) best = &e;
-      if (e.role == Role::kPrototype && (!proto_best || e.rate > proto_best->rate)) proto_best = &e;
       if (e.name == "own_batched") own = &e;
     }
     if (!best || !own) {
@@ -626,9 +594,6 @@ void print_summary() {
     const double r = own->rate / best->rate;
     std::printf("  %-16s fastest peer %s %.1f M/s; own_batched %.1f M/s = %.2fx: %s", t, best->name.c_str(),
                 best->rate / 1e6, own->rate / 1e6, r, r >= 3 ? "met" : "NOT met");
-    if (proto_best)
-      std::printf(" (prototype: %s %.1f M/s = %.2fx)", proto_best->name.c_str(), proto_best->rate / 1e6,
-                  proto_best->rate / best->rate);
     std::printf("\n");
   }
 }

@@ -1,7 +1,8 @@
 // common/spline/surface.h — tensor-product surfaces: Bézier, Lagrange,
 // Hermite, Hermite–Lagrange, B-spline and NURBS; partial derivatives, normals,
 // twist vectors, iso-parameter curves, C^k continuation of a Bézier patch,
-// interpolating Bézier surfaces and a fast grid evaluator for tessellation.
+// interpolating Bézier surfaces; the fast grid evaluator (surface_grid) is
+// declared in fast/surface_batch.h, included here.
 //
 // A tensor-product surface is made of two curve representations (ch. 1
 // §1.7, "Surface Representations"):
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "spline/bspline.h"
+#include "spline/fast/surface_batch.h"
 #include "spline/tessellate.h"
 #include "spline/types.h"
 #include "spline/vec.h"
@@ -320,18 +322,6 @@ std::vector<Vec4> to_homogeneous(const BsplineSurface& surface);
 /// w_ij = w_i wc_j with (cx_j, cy_j, wc_j) the unit circle's points and weights.
 /// Revolving nurbs.h's circle (turned into the xz-plane) gives an exact sphere.
 BsplineSurface revolved_surface(const BsplineCurve& profile);
-
-/// Batched evaluation on the grid us x vs, for tessellation and benchmarks:
-/// points[a * vs.size() + b] = S(us[a], vs[b]) and, when normals is not null,
-/// (*normals)[...] = the unit normal there. The basis functions (and their
-/// first derivatives, for normals) are computed once per us[a] and once per
-/// vs[b]; each row a first blends the control rows along u into nv
-/// homogeneous points (and their u-derivatives), then every point of the row
-/// costs one short sum along v. Degenerate normals take surface_normal()'s
-/// fallback. Checks the surface once; every parameter must lie in the domain
-/// (the lists need not be sorted, though sorted grids are the usual case).
-void surface_grid(const BsplineSurface& surface, const std::vector<double>& us, const std::vector<double>& vs,
-                  std::vector<Vec3>& points, std::vector<Vec3>* normals);
 
 /// The surface as tessellate.h's SurfaceEvaluator: (u, v) -> point, unit
 /// normal (surface_normal's fallback at degenerate points) and the partials
