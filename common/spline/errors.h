@@ -121,6 +121,7 @@ struct ErrorValue {
   std::string name;
   double value = 0;
 };
+/// Same name and value; a NaN equals a NaN here (a "not finite" error names one).
 inline bool operator==(const ErrorValue& a, const ErrorValue& b) {
   return a.name == b.name && (a.value == b.value || (std::isnan(a.value) && std::isnan(b.value)));
 }
