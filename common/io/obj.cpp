@@ -12,7 +12,8 @@ namespace gllab::io {
 namespace {
 
 void append_number(std::string& out, double x) {
-  if (!std::isfinite(x)) spline::fail("OBJ: " + shortest_text(x) + " is not finite");
+  if (!std::isfinite(x))
+    spline::fail(spline::ErrorCode::kNotFinite, "OBJ: " + shortest_text(x) + " is not finite", {{"x", x}});
   out += shortest_text(x);
 }
 
@@ -38,8 +39,10 @@ void append_comment(std::string& out, const std::string& comment) {
 
 std::string obj_text(const spline::Mesh& mesh, const std::string& comment) {
   if (mesh.normals.size() != mesh.positions.size())
-    spline::fail("OBJ: " + std::to_string(mesh.normals.size()) + " normals for " +
-                 std::to_string(mesh.positions.size()) + " positions (need one per vertex)");
+    spline::fail(spline::ErrorCode::kSizeMismatch,
+                 "OBJ: " + std::to_string(mesh.normals.size()) + " normals for " +
+                     std::to_string(mesh.positions.size()) + " positions (need one per vertex)",
+                 {{"normals", mesh.normals.size()}, {"positions", mesh.positions.size()}});
   const int count = static_cast<int>(mesh.positions.size());
   std::string out;
   append_comment(out, comment);
@@ -49,8 +52,10 @@ std::string obj_text(const spline::Mesh& mesh, const std::string& comment) {
     out += 'f';
     for (int index : mesh.triangles[t]) {
       if (index < 0 || index >= count)
-        spline::fail("OBJ: triangle " + std::to_string(t) + " uses vertex " + std::to_string(index) + " of " +
-                     std::to_string(count));
+        spline::fail(spline::ErrorCode::kIndexOutOfRange,
+                     "OBJ: triangle " + std::to_string(t) + " uses vertex " + std::to_string(index) + " of " +
+                         std::to_string(count),
+                     {{"triangle", t}, {"vertex", index}, {"vertices", count}});
       const std::string one_based = std::to_string(index + 1);
       out += ' ' + one_based + "//" + one_based;
     }

@@ -7,12 +7,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -314,7 +314,7 @@ class Checker {
       }
     }
     core_check("knots_u", [&] { spline::validate_knots(s.p, s.nu, s.U, "U knot vector"); });
-    core_check("knots_v", [&] { spline::validate_knots(s.q, s.nv, s.V, "V knot vector"); });
+    core_check("knots_v", [&] { spline::validate_knots(s.q, s.nv, s.V, "V knot vector", "V"); });
     core_check("", [&] { spline::validate(s); });
     if (const Json* trims = optional_member(v, "trims")) {
       s.trims = trim_loops(*trims);
@@ -339,24 +339,21 @@ class Checker {
   }
 
   /// The core's trim validation (trim.h): closed loops inside the domain, no
-  /// crossings, outer loops counter-clockwise and holes clockwise. Its
-  /// "trim loop 1: ..." becomes the JSON path "trims[1]: ...".
+  /// crossings, outer loops counter-clockwise and holes clockwise. An error
+  /// whose values name a loop (TrimLoopError and the like: {loop=1, ...})
+  /// goes to the JSON path "trims[1]", its "trim loop 1: " said once, by the
+  /// path; any other names "trims".
   void check_trims(const BsplineSurface& s) const {
     try {
       spline::validate_trim_loops(s.trims, spline::uv_domain(s));
-    } catch (const std::invalid_argument& e) {
+    } catch (const spline::SplineError& e) {
+      const std::optional<double> loop = e.value("loop");
+      if (!loop) fail("trims", e.what());
+      const auto l = static_cast<std::size_t>(*loop);
       std::string message = e.what();
-      const std::string prefix = "trim loop ";
-      if (message.rfind(prefix, 0) == 0) {
-        std::size_t end = prefix.size();
-        while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
-        if (end > prefix.size()) {
-          const std::string path = "trims[" + message.substr(prefix.size(), end - prefix.size()) + "]";
-          if (message.compare(end, 2, ": ") == 0) message = message.substr(end + 2);
-          fail(path, message);
-        }
-      }
-      fail("trims", message);
+      const std::string head = "trim loop " + std::to_string(l) + ": ";
+      if (message.compare(0, head.size(), head) == 0) message.erase(0, head.size());
+      fail(index_path("trims", l), message);
     }
   }
 

@@ -35,17 +35,21 @@ double falling_factorial(int n, int k) {
 std::string interval_text(double a, double b) { return "[a, b] = [" + num(a) + ", " + num(b) + "]"; }
 
 void validate_as(const BezierCurve& curve, const std::string& what) {
-  if (curve.P.empty()) fail(what + ": no control points (P is empty)");
+  if (curve.P.empty()) fail(ErrorCode::kEmptyInput, what + ": no control points (P is empty)", {{"points", 0}});
   require_finite(curve.a, what, "a");
   require_finite(curve.b, what, "b");
-  if (!(curve.a < curve.b)) fail(what + ": interval " + interval_text(curve.a, curve.b) + " is empty (need a < b)");
+  if (!(curve.a < curve.b))
+    fail(ErrorCode::kEmptyDomain, what + ": interval " + interval_text(curve.a, curve.b) + " is empty (need a < b)",
+         {{"a", curve.a}, {"b", curve.b}});
   for (std::size_t i = 0; i < curve.P.size(); ++i) require_finite(curve.P[i], what, at("P", i));
 }
 
 void validate_interval(double a, double b, const std::string& what) {
   require_finite(a, what, "a");
   require_finite(b, what, "b");
-  if (!(a < b)) fail(what + ": interval " + interval_text(a, b) + " is empty (need a < b)");
+  if (!(a < b))
+    fail(ErrorCode::kEmptyDomain, what + ": interval " + interval_text(a, b) + " is empty (need a < b)",
+         {{"a", a}, {"b", b}});
 }
 
 /// t checked against [a, b] and snapped onto it when it misses only by
@@ -53,8 +57,12 @@ void validate_interval(double a, double b, const std::string& what) {
 double checked_parameter(double t, double a, double b, const std::string& what) {
   require_finite(t, what, "t");
   const double slack = kBezierParameterSlack * std::max({std::fabs(a), std::fabs(b), b - a});
-  if (t < a - slack) fail(what + ": t=" + num(t) + " is outside " + interval_text(a, b) + " (below a)");
-  if (t > b + slack) fail(what + ": t=" + num(t) + " is outside " + interval_text(a, b) + " (above b)");
+  if (t < a - slack)
+    fail(ErrorCode::kParameterOutsideDomain, what + ": t=" + num(t) + " is outside " + interval_text(a, b) +
+         " (below a)", {{"t", t}, {"a", a}, {"b", b}});
+  if (t > b + slack)
+    fail(ErrorCode::kParameterOutsideDomain, what + ": t=" + num(t) + " is outside " + interval_text(a, b) +
+         " (above b)", {{"t", t}, {"a", a}, {"b", b}});
   return std::clamp(t, a, b);
 }
 
@@ -62,7 +70,9 @@ double checked_parameter(double t, double a, double b, const std::string& what) 
 double local_parameter(double t, double a, double b) { return (t - a) / (b - a); }
 
 void require_order(int k, const std::string& what, const char* name) {
-  if (k < 0) fail(what + ": derivative order " + name + "=" + std::to_string(k) + " is negative");
+  if (k < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder, what + ": derivative order " + name + "=" + std::to_string(k) +
+         " is negative", {{name, k}});
 }
 
 /// Forward differences Delta^k of the points, applied in place k times:
@@ -112,7 +122,7 @@ void validate(const BezierCurve& curve) { validate_as(curve, "Bezier curve"); }
 
 double bernstein(int i, int n, double t, double a, double b) {
   const std::string what = "bernstein";
-  if (n < 0) fail(what + ": degree n=" + std::to_string(n) + " is negative");
+  if (n < 0) fail(ErrorCode::kDegreeTooLow, what + ": degree n=" + std::to_string(n) + " is negative", {{"n", n}});
   validate_interval(a, b, what);
   const double s = local_parameter(checked_parameter(t, a, b, what), a, b);
   if (i < 0 || i > n) return 0;
@@ -128,7 +138,7 @@ double bernstein(int i, int n, double t, double a, double b) {
 
 std::vector<double> bernstein_all(int n, double t, double a, double b) {
   const std::string what = "bernstein_all";
-  if (n < 0) fail(what + ": degree n=" + std::to_string(n) + " is negative");
+  if (n < 0) fail(ErrorCode::kDegreeTooLow, what + ": degree n=" + std::to_string(n) + " is negative", {{"n", n}});
   validate_interval(a, b, what);
   const double s = local_parameter(checked_parameter(t, a, b, what), a, b);
   // A1.3 AllBernstein (The NURBS Book, p. 21): degree j from degree j - 1,
@@ -166,7 +176,8 @@ Vec3 bezier_point(const BezierCurve& curve, double t) {
 // ---- monomial form -------------------------------------------------------------
 
 std::vector<std::vector<double>> bezier_matrix(int n) {
-  if (n < 0) fail("bezier_matrix: degree n=" + std::to_string(n) + " is negative");
+  if (n < 0)
+    fail(ErrorCode::kDegreeTooLow, "bezier_matrix: degree n=" + std::to_string(n) + " is negative", {{"n", n}});
   const std::size_t size = static_cast<std::size_t>(n) + 1;
   std::vector<std::vector<double>> M(size, std::vector<double>(size, 0.0));
   for (int j = 0; j <= n; ++j) {  // power s^j sits in row n - j (the lecture's layout)
@@ -206,7 +217,7 @@ std::vector<Vec3> monomial_coefficients(const BezierCurve& curve) {
 
 BezierCurve bezier_from_monomial(const std::vector<Vec3>& c, double a, double b) {
   const std::string what = "bezier_from_monomial";
-  if (c.empty()) fail(what + ": no coefficients (c is empty)");
+  if (c.empty()) fail(ErrorCode::kEmptyInput, what + ": no coefficients (c is empty)", {{"coefficients", 0}});
   validate_interval(a, b, what);
   for (std::size_t j = 0; j < c.size(); ++j) require_finite(c[j], what, at("c", j));
   const std::size_t size = c.size();
@@ -237,7 +248,7 @@ BezierCurve bezier_from_monomial(const std::vector<Vec3>& c, double a, double b)
 // ---- subdivision and degree elevation ------------------------------------------
 
 std::vector<Vec3> convex_hull_xy(const std::vector<Vec3>& P) {
-  if (P.empty()) fail("convex_hull_xy: no points (P is empty)");
+  if (P.empty()) fail(ErrorCode::kEmptyInput, "convex_hull_xy: no points (P is empty)", {{"points", 0}});
   for (std::size_t i = 0; i < P.size(); ++i) require_finite(P[i], "convex_hull_xy", at("P", i));
   std::vector<Vec3> q = P;
   std::sort(q.begin(), q.end(), [](Vec3 u, Vec3 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); });
@@ -265,8 +276,10 @@ BezierSplit subdivide(const BezierCurve& curve, double t) {
   const DeCasteljau scheme = de_casteljau_as(curve, t, what);
   const double tc = checked_parameter(t, curve.a, curve.b, what);
   if (tc == curve.a || tc == curve.b)
-    fail(what + ": t=" + num(t) + " is an end of " + interval_text(curve.a, curve.b) +
-         " (one piece would be empty; need a < t < b)");
+    fail(ErrorCode::kParameterOutsideDomain,
+         what + ": t=" + num(t) + " is an end of " + interval_text(curve.a, curve.b) +
+             " (one piece would be empty; need a < t < b)",
+         {{"t", t}, {"a", curve.a}, {"b", curve.b}});
   const std::size_t n = curve.P.size() - 1;
   std::vector<Vec3> left(n + 1), right(n + 1);
   for (std::size_t j = 0; j <= n; ++j) {
@@ -279,7 +292,8 @@ BezierSplit subdivide(const BezierCurve& curve, double t) {
 BezierCurve degree_elevate(const BezierCurve& curve, int times) {
   const std::string what = "degree_elevate";
   validate_as(curve, what);
-  if (times < 0) fail(what + ": times=" + std::to_string(times) + " is negative");
+  if (times < 0)
+    fail(ErrorCode::kOutOfRange, what + ": times=" + std::to_string(times) + " is negative", {{"times", times}});
   if (times == 0) return curve;
   const int n = bezier_degree(curve);
   const auto& b = curve.P;
@@ -379,9 +393,13 @@ BezierContinuation continuation_points(const BezierCurve& a, int k, double next_
   validate_as(a, what);
   const int n = bezier_degree(a);
   if (k < 0 || k > n)
-    fail(what + ": continuity k=" + std::to_string(k) + " must lie in [0, " + std::to_string(n) + "] (the degree)");
+    fail(ErrorCode::kOutOfRange,
+         what + ": continuity k=" + std::to_string(k) + " must lie in [0, " + std::to_string(n) + "] (the degree)",
+         {{"k", k}, {"n", n}});
   require_finite(next_length, what, "next_length");
-  if (!(next_length > 0)) fail(what + ": next_length=" + num(next_length) + " must be > 0");
+  if (!(next_length > 0))
+    fail(ErrorCode::kOutOfRange, what + ": next_length=" + num(next_length) + " must be > 0",
+         {{"next_length", next_length}});
   BezierContinuation out;
   out.tau = 1 + next_length / (a.b - a.a);
   // de Casteljau at tau on the last k + 1 points only: b_{n-k}^r .. b_{n-r}^r
@@ -419,22 +437,28 @@ BezierCurve bezier_antiderivative(const BezierCurve& curve, Vec3 start) {
 
 BezierCurve bezier_interpolate(const std::vector<Vec3>& Q, const std::vector<double>& t, double a, double b) {
   const std::string what = "bezier_interpolate";
-  if (Q.empty()) fail(what + ": no points to interpolate (Q is empty)");
+  if (Q.empty()) fail(ErrorCode::kEmptyInput, what + ": no points to interpolate (Q is empty)", {{"points", 0}});
   if (t.size() != Q.size())
-    fail(what + ": " + std::to_string(Q.size()) + " points but " + std::to_string(t.size()) +
-         " parameters (need one t_j per Q_j)");
+    fail(ErrorCode::kSizeMismatch,
+         what + ": " + std::to_string(Q.size()) + " points but " + std::to_string(t.size()) +
+             " parameters (need one t_j per Q_j)",
+         {{"points", Q.size()}, {"parameters", t.size()}});
   validate_interval(a, b, what);
   for (std::size_t j = 0; j < Q.size(); ++j) require_finite(Q[j], what, at("Q", j));
   std::vector<double> s(t.size());
   for (std::size_t j = 0; j < t.size(); ++j) {
     require_finite(t[j], what, at("t", j));
     if (t[j] < a || t[j] > b)
-      fail(what + ": " + at("t", j) + "=" + num(t[j]) + " is outside " + interval_text(a, b) +
-           (t[j] < a ? " (below a)" : " (above b)"));
+      fail(ErrorCode::kParameterOutsideDomain,
+           what + ": " + at("t", j) + "=" + num(t[j]) + " is outside " + interval_text(a, b) +
+               (t[j] < a ? " (below a)" : " (above b)"),
+           {{"j", j}, {at("t", j), t[j]}, {"a", a}, {"b", b}});
     for (std::size_t k = 0; k < j; ++k)
       if (t[k] == t[j])
-        fail(what + ": " + at("t", k) + "=" + num(t[k]) + " and " + at("t", j) + "=" + num(t[j]) +
-             " coincide (parameters must be pairwise distinct)");
+        fail(ErrorCode::kNodesCoincide,
+             what + ": " + at("t", k) + "=" + num(t[k]) + " and " + at("t", j) + "=" + num(t[j]) +
+                 " coincide (parameters must be pairwise distinct)",
+             {{"k", k}, {"j", j}, {at("t", k), t[k]}});
     s[j] = local_parameter(t[j], a, b);
   }
   // ch. 1 §1.6: row j of the system is sum_i b_i B_i^r(s_j) = Q_j.
@@ -452,8 +476,10 @@ BezierCurve bezier_interpolate(const std::vector<Vec3>& Q, const std::vector<dou
 BezierCurve bezier_interpolate(const std::vector<Vec3>& Q, const std::vector<double>& t) {
   const std::string what = "bezier_interpolate";
   if (Q.size() < 2 || t.size() < 2)
-    fail(what + ": " + std::to_string(Q.size()) + " point(s) and " + std::to_string(t.size()) +
-         " parameter(s) give no interval [min t, max t] (pass a and b explicitly)");
+    fail(ErrorCode::kTooFewPoints,
+         what + ": " + std::to_string(Q.size()) + " point(s) and " + std::to_string(t.size()) +
+             " parameter(s) give no interval [min t, max t] (pass a and b explicitly)",
+         {{"points", Q.size()}, {"parameters", t.size()}});
   for (std::size_t j = 0; j < t.size(); ++j) require_finite(t[j], what, at("t", j));
   const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
   return bezier_interpolate(Q, t, *lo, *hi);

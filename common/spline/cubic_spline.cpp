@@ -32,12 +32,16 @@ template <class T>
 void check_input(const std::string& what, const std::vector<double>& t, const std::vector<T>& values,
                  std::size_t extra_nodes) {
   if (values.size() < 2)
-    fail(what + ": " + std::to_string(values.size()) + (values.size() == 1 ? " point" : " points") +
-         " given, at least 2 needed");
+    fail(ErrorCode::kTooFewPoints,
+         what + ": " + std::to_string(values.size()) + (values.size() == 1 ? " point" : " points") +
+             " given, at least 2 needed",
+         {{"points", values.size()}});
   if (t.size() != values.size() + extra_nodes)
-    fail(what + ": " + std::to_string(t.size()) + " nodes t for " + std::to_string(values.size()) + " points (" +
-         std::to_string(values.size() + extra_nodes) + " needed" +
-         (extra_nodes ? ": a closed spline has one more node than points)" : ")"));
+    fail(ErrorCode::kSizeMismatch,
+         what + ": " + std::to_string(t.size()) + " nodes t for " + std::to_string(values.size()) + " points (" +
+             std::to_string(values.size() + extra_nodes) + " needed" +
+             (extra_nodes ? ": a closed spline has one more node than points)" : ")"),
+         {{"nodes", t.size()}, {"points", values.size()}, {"needed", values.size() + extra_nodes}});
   // Test first, build the message (a std::string per entry) only on failure.
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!finite(values[i])) require_finite(values[i], what, at(values_name(values), i));
@@ -45,8 +49,10 @@ void check_input(const std::string& what, const std::vector<double>& t, const st
     if (!std::isfinite(t[i])) require_finite(t[i], what, at("t", i));
   for (std::size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
-      fail(what + ": " + at("t", i) + "=" + num(t[i]) + " <= " + at("t", i - 1) + "=" + num(t[i - 1]) +
-           " (nodes must increase strictly)");
+      fail(ErrorCode::kParametersNotSorted,
+           what + ": " + at("t", i) + "=" + num(t[i]) + " <= " + at("t", i - 1) + "=" + num(t[i - 1]) +
+               " (nodes must increase strictly)",
+           {{"i", i}, {at("t", i), t[i]}, {at("t", i - 1), t[i - 1]}});
 }
 
 /// A closed curve is given each point once; p_{N-1} == p_0 would draw a
@@ -54,8 +60,10 @@ void check_input(const std::string& what, const std::vector<double>& t, const st
 void check_not_repeated(const std::string&, const std::vector<double>&) {}
 void check_not_repeated(const std::string& what, const std::vector<Vec3>& P) {
   if (P.back() == P.front())
-    fail(what + ": " + at(values_name(P), P.size() - 1) + "=" + num(P.back()) +
-         " repeats P[0]; a closed spline closes by itself (give each point once)");
+    fail(ErrorCode::kCoincidentPoints,
+         what + ": " + at(values_name(P), P.size() - 1) + "=" + num(P.back()) +
+             " repeats P[0]; a closed spline closes by itself (give each point once)",
+         {{"i", P.size() - 1}, {at(values_name(P), P.size() - 1), P.back()}});
 }
 
 int dimension_of(const std::vector<double>&) { return 1; }
@@ -203,9 +211,13 @@ PiecewiseCubic<T> periodic(const std::vector<double>& t, const std::vector<T>& y
 /// Horner's rule for the k-th derivative of a + b h + c h^2 + d h^3.
 template <class T>
 T derivative_of_segment(const PiecewiseCubic<T>& s, std::size_t i, double u, int k) {
-  if (k < 0) fail("segment_derivative: derivative order k=" + std::to_string(k) + " (must be >= 0)");
+  if (k < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder,
+         "segment_derivative: derivative order k=" + std::to_string(k) + " (must be >= 0)", {{"k", k}});
   if (i >= s.segments())
-    fail("segment_derivative: segment " + std::to_string(i) + " of " + std::to_string(s.segments()));
+    fail(ErrorCode::kIndexOutOfRange,
+         "segment_derivative: segment " + std::to_string(i) + " of " + std::to_string(s.segments()),
+         {{"segment", i}, {"segments", s.segments()}});
   const double h = u - s.t[i];
   switch (k) {
     case 0: return s.a[i] + h * (s.b[i] + h * (s.c[i] + h * s.d[i]));
@@ -381,7 +393,8 @@ std::vector<BezierCurve> bezier_from_de_boor(const std::vector<double>& t, const
 
 void check_end_kind(const std::string& what, EndCondition end) {
   if (end == EndCondition::kClamped)
-    fail(what + ": clamped ends need the inner Bezier points b_1 and b_last (use the overload that takes them)");
+    fail(ErrorCode::kEmptyInput,
+         what + ": clamped ends need the inner Bezier points b_1 and b_last (use the overload that takes them)");
 }
 
 }  // namespace
@@ -410,9 +423,13 @@ CubicSpline periodic_cubic_spline(const std::vector<double>& t, const std::vecto
 // --- evaluation ----------------------------------------------------------------------
 
 std::size_t segment_index(const std::vector<double>& t, double u) {
-  if (t.size() < 2) fail("segment_index: " + std::to_string(t.size()) + " nodes, at least 2 needed");
+  if (t.size() < 2)
+    fail(ErrorCode::kTooFewPoints, "segment_index: " + std::to_string(t.size()) + " nodes, at least 2 needed",
+         {{"nodes", t.size()}});
   if (!(u >= t.front() && u <= t.back()))
-    fail("segment_index: t=" + num(u) + " outside [" + num(t.front()) + ", " + num(t.back()) + "]");
+    fail(std::isnan(u) ? ErrorCode::kNotFinite : ErrorCode::kParameterOutsideDomain,
+         "segment_index: t=" + num(u) + " outside [" + num(t.front()) + ", " + num(t.back()) + "]",
+         {{"t", u}, {"a", t.front()}, {"b", t.back()}});
   // The first node greater than u ends u's segment; u == t[N] stays in the last one.
   const auto above = std::upper_bound(t.begin(), t.end(), u);
   const std::size_t i = static_cast<std::size_t>(above - t.begin()) - 1;
@@ -453,7 +470,7 @@ std::vector<BezierCurve> bezier_segments(const CubicSpline& s) {
 }
 
 BsplineCurve bspline_curve(const CubicSpline& s) {
-  if (s.segments() == 0) fail("bspline_curve: the spline has no segments");
+  if (s.segments() == 0) fail(ErrorCode::kEmptyInput, "bspline_curve: the spline has no segments", {{"segments", 0}});
   BsplineCurve curve;
   curve.p = 3;
   curve.U = spline_knots(s.t, s.end == EndCondition::kPeriodic);
@@ -463,7 +480,7 @@ BsplineCurve bspline_curve(const CubicSpline& s) {
 }
 
 BsplineCurve bspline_curve(const ScalarCubicSpline& s) {
-  if (s.segments() == 0) fail("bspline_curve: the spline has no segments");
+  if (s.segments() == 0) fail(ErrorCode::kEmptyInput, "bspline_curve: the spline has no segments", {{"segments", 0}});
   BsplineCurve curve;
   curve.p = 3;
   curve.U = spline_knots(s.t, s.end == EndCondition::kPeriodic);

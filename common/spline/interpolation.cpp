@@ -21,21 +21,25 @@ namespace {
 /// "pairwise unequal nodes t_i"), else the Vandermonde matrix is singular and
 /// L_i and the divided differences divide by zero.
 void require_nodes(const std::vector<double>& nodes, const std::string& what) {
-  if (nodes.empty()) fail(what + ": no nodes (need at least one t_i)");
+  if (nodes.empty()) fail(ErrorCode::kEmptyInput, what + ": no nodes (need at least one t_i)", {{"nodes", 0}});
   for (std::size_t i = 0; i < nodes.size(); ++i) require_finite(nodes[i], what, at("t", i));
   for (std::size_t i = 0; i < nodes.size(); ++i)
     for (std::size_t k = i + 1; k < nodes.size(); ++k)
       if (nodes[i] == nodes[k])
-        fail(what + ": nodes " + at("t", i) + "=" + num(nodes[i]) + " and " + at("t", k) + "=" +
-             num(nodes[k]) + " coincide (nodes must be pairwise distinct)");
+        fail(ErrorCode::kNodesCoincide,
+             what + ": nodes " + at("t", i) + "=" + num(nodes[i]) + " and " + at("t", k) + "=" + num(nodes[k]) +
+                 " coincide (nodes must be pairwise distinct)",
+             {{"i", i}, {"k", k}, {at("t", i), nodes[i]}});
 }
 
 /// One value per node, all finite.
 template <class T>
 void require_values(const std::vector<double>& nodes, const std::vector<T>& f, const std::string& what) {
   if (f.size() != nodes.size())
-    fail(what + ": " + std::to_string(nodes.size()) + " nodes but " + std::to_string(f.size()) +
-         " values (need one f_i per t_i)");
+    fail(ErrorCode::kSizeMismatch,
+         what + ": " + std::to_string(nodes.size()) + " nodes but " + std::to_string(f.size()) +
+             " values (need one f_i per t_i)",
+         {{"nodes", nodes.size()}, {"values", f.size()}});
   for (std::size_t i = 0; i < f.size(); ++i) require_finite(f[i], what, at("f", i));
 }
 
@@ -46,12 +50,16 @@ std::vector<T> gauss_solve_any(std::vector<std::vector<double>> A, std::vector<T
   const std::string what = "gauss_solve";
   const std::size_t n = A.size();
   if (rhs.size() != n)
-    fail(what + ": the matrix has " + std::to_string(n) + " rows but the right-hand side has " +
-         std::to_string(rhs.size()) + " entries");
+    fail(ErrorCode::kSizeMismatch,
+         what + ": the matrix has " + std::to_string(n) + " rows but the right-hand side has " +
+             std::to_string(rhs.size()) + " entries",
+         {{"rows", n}, {"rhs", rhs.size()}});
   for (std::size_t r = 0; r < n; ++r) {
     if (A[r].size() != n)
-      fail(what + ": row " + std::to_string(r) + " has " + std::to_string(A[r].size()) + " entries, expected " +
-           std::to_string(n) + " (the matrix must be square)");
+      fail(ErrorCode::kSizeMismatch,
+           what + ": row " + std::to_string(r) + " has " + std::to_string(A[r].size()) + " entries, expected " +
+               std::to_string(n) + " (the matrix must be square)",
+           {{"row", r}, {"entries", A[r].size()}, {"expected", n}});
     for (std::size_t c = 0; c < n; ++c) require_finite(A[r][c], what, "A[" + std::to_string(r) + "][" + std::to_string(c) + "]");
     require_finite(rhs[r], what, at("rhs", r));
   }
@@ -63,7 +71,9 @@ std::vector<T> gauss_solve_any(std::vector<std::vector<double>> A, std::vector<T
     for (std::size_t r = col + 1; r < n; ++r)
       if (std::fabs(A[r][col]) > std::fabs(A[pivot][col])) pivot = r;
     if (A[pivot][col] == 0)
-      fail(what + ": the matrix is singular (column " + std::to_string(col) + " has no non-zero pivot)");
+      fail(ErrorCode::kSingularMatrix,
+           what + ": the matrix is singular (column " + std::to_string(col) + " has no non-zero pivot)",
+           {{"column", col}});
     std::swap(A[col], A[pivot]);
     std::swap(rhs[col], rhs[pivot]);
 
@@ -132,14 +142,16 @@ std::vector<std::vector<T>> divided_differences_any(const std::vector<double>& n
 template <class T>
 std::vector<T> hermite_any(const std::vector<HermiteNode<T>>& nodes) {
   const std::string what = "hermite_coefficients";
-  if (nodes.empty()) fail(what + ": no nodes (need at least one t_i)");
+  if (nodes.empty()) fail(ErrorCode::kEmptyInput, what + ": no nodes (need at least one t_i)", {{"nodes", 0}});
   std::vector<double> t;
   std::size_t conditions = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     t.push_back(nodes[i].t);
     if (nodes[i].derivatives.empty())
-      fail(what + ": node " + std::to_string(i) + " (t=" + num(nodes[i].t) +
-           ") has no conditions (give at least its value)");
+      fail(ErrorCode::kEmptyInput,
+           what + ": node " + std::to_string(i) + " (t=" + num(nodes[i].t) +
+               ") has no conditions (give at least its value)",
+           {{"i", i}, {"t", nodes[i].t}});
     for (std::size_t j = 0; j < nodes[i].derivatives.size(); ++j)
       require_finite(nodes[i].derivatives[j], what,
                      "f" + std::to_string(i) + "^(" + std::to_string(j) + ")");
@@ -176,8 +188,14 @@ constexpr double kSegmentSlack = 4 * std::numeric_limits<double>::epsilon();
 double checked_segment_parameter(double t, double a, double b, const std::string& what) {
   require_finite(t, what, "t");
   const double slack = kSegmentSlack * std::max({std::fabs(a), std::fabs(b), b - a});
-  if (t < a - slack) fail(what + ": t=" + num(t) + " is outside [" + num(a) + ", " + num(b) + "] (below " + num(a) + ")");
-  if (t > b + slack) fail(what + ": t=" + num(t) + " is outside [" + num(a) + ", " + num(b) + "] (above " + num(b) + ")");
+  if (t < a - slack)
+    fail(ErrorCode::kParameterOutsideDomain,
+         what + ": t=" + num(t) + " is outside [" + num(a) + ", " + num(b) + "] (below " + num(a) + ")",
+         {{"t", t}, {"a", a}, {"b", b}});
+  if (t > b + slack)
+    fail(ErrorCode::kParameterOutsideDomain,
+         what + ": t=" + num(t) + " is outside [" + num(a) + ", " + num(b) + "] (above " + num(b) + ")",
+         {{"t", t}, {"a", a}, {"b", b}});
   return std::clamp(t, a, b);
 }
 
@@ -233,7 +251,8 @@ double lagrange_basis(const std::vector<double>& nodes, int i, double t) {
   require_nodes(nodes, what);
   require_finite(t, what, "t");
   if (i < 0 || i >= static_cast<int>(nodes.size()))
-    fail(what + ": i=" + std::to_string(i) + " is outside 0.." + std::to_string(nodes.size() - 1));
+    fail(ErrorCode::kIndexOutOfRange, what + ": i=" + std::to_string(i) + " is outside 0.." +
+         std::to_string(nodes.size() - 1), {{"i", i}, {"max", nodes.size() - 1}});
   // L_i(t) = prod_{k != i} (t - t_k) / (t_i - t_k)   (ch. 1 §1.6, Theorem 2)
   const std::size_t ii = static_cast<std::size_t>(i);
   double L = 1;
@@ -267,8 +286,10 @@ double newton_basis(const std::vector<double>& nodes, int i, double t) {
   const std::string what = "newton_basis";
   require_finite(t, what, "t");
   if (i < 0 || i > static_cast<int>(nodes.size()))
-    fail(what + ": i=" + std::to_string(i) + " is outside 0.." + std::to_string(nodes.size()) +
-         " (N_i uses the nodes t_0..t_{i-1})");
+    fail(ErrorCode::kIndexOutOfRange,
+         what + ": i=" + std::to_string(i) + " is outside 0.." + std::to_string(nodes.size()) +
+             " (N_i uses the nodes t_0..t_{i-1})",
+         {{"i", i}, {"max", nodes.size()}});
   double N = 1;  // N_i(t) = prod_{k=0}^{i-1} (t - t_k)   (ch. 1 §1.6)
   for (int k = 0; k < i; ++k) {
     require_finite(nodes[static_cast<std::size_t>(k)], what, at("t", static_cast<std::size_t>(k)));
@@ -293,7 +314,9 @@ void NewtonInterpolant<T>::add_node(double t, T value) {
   require_finite(value, what, "value");
   for (std::size_t j = 0; j < nodes_.size(); ++j)
     if (nodes_[j] == t)
-      fail(what + ": t=" + num(t) + " equals node " + at("t", j) + " (nodes must be pairwise distinct)");
+      fail(ErrorCode::kNodesCoincide,
+           what + ": t=" + num(t) + " equals node " + at("t", j) + " (nodes must be pairwise distinct)",
+           {{"t", t}, {"j", j}});
 
   // The new node is t_n. It adds the bottom diagonal of the scheme (ch. 1
   // §1.6): f[t_n], f[t_{n-1}, t_n], ..., f[t_0..t_n]. Each entry needs the one
@@ -319,7 +342,7 @@ std::vector<T> NewtonInterpolant<T>::coefficients() const {
 template <class T>
 T NewtonInterpolant<T>::operator()(double t) const {
   const std::string what = "Newton interpolant";
-  if (nodes_.empty()) fail(what + ": no nodes yet (call add_node first)");
+  if (nodes_.empty()) fail(ErrorCode::kEmptyInput, what + ": no nodes yet (call add_node first)", {{"nodes", 0}});
   require_finite(t, what, "t");
   // Nested form: start with a_n, then p = a_i + (t - t_i) p for i = n-1..0.
   std::size_t i = nodes_.size() - 1;
@@ -390,7 +413,9 @@ Vec3 hermite_point(Vec3 p0, Vec3 m0, Vec3 p1, Vec3 m1, double t, double a, doubl
   require_segment_data(p0, m0, p1, m1, what);
   require_finite(a, what, "a");
   require_finite(b, what, "b");
-  if (!(a < b)) fail(what + ": interval [a, b] = [" + num(a) + ", " + num(b) + "] is empty (need a < b)");
+  if (!(a < b))
+    fail(ErrorCode::kEmptyDomain, what + ": interval [a, b] = [" + num(a) + ", " + num(b) + "] is empty (need a < b)",
+         {{"a", a}, {"b", b}});
   const double h = b - a;
   const HermiteBasis H = cubic_hermite_basis((checked_segment_parameter(t, a, b, what) - a) / h);
   return H.H0 * p0 + H.H1 * p1 + h * (H.H0bar * m0 + H.H1bar * m1);

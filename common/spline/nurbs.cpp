@@ -28,7 +28,9 @@ BsplineCurve from_homogeneous(int p, const std::vector<double>& U, const std::ve
   c.w.resize(Pw.size());
   for (std::size_t i = 0; i < Pw.size(); ++i) {
     require_finite(Pw[i].w, "homogeneous points", at("Pw", i) + ".w");
-    if (!(Pw[i].w > 0)) fail("homogeneous points: " + at("Pw", i) + ".w=" + num(Pw[i].w) + " must be > 0");
+    if (!(Pw[i].w > 0))
+      fail(ErrorCode::kWeightNotPositive, "homogeneous points: " + at("Pw", i) + ".w=" + num(Pw[i].w) + " must be > 0",
+           {{"i", i}, {at("Pw", i) + ".w", Pw[i].w}});
     c.P[i] = project(Pw[i]);
     c.w[i] = Pw[i].w;
   }
@@ -41,7 +43,9 @@ BsplineCurve from_homogeneous(int p, const std::vector<double>& U, const std::ve
 namespace {
 void check_r(double r) {
   require_finite(r, "conic", "r");
-  if (r < 0 || r >= 1) fail("conic: r=" + num(r) + " must satisfy 0 <= r < 1 (ch. 1 §1.6: weight r/(1-r))");
+  if (r < 0 || r >= 1)
+    fail(ErrorCode::kOutOfRange, "conic: r=" + num(r) + " must satisfy 0 <= r < 1 (ch. 1 §1.6: weight r/(1-r))",
+         {{"r", r}});
 }
 }  // namespace
 
@@ -70,7 +74,7 @@ double conic_weight(double r) {
 
 double conic_r(double w1) {
   require_finite(w1, "conic", "w1");
-  if (w1 < 0) fail("conic: w1=" + num(w1) + " must be >= 0");
+  if (w1 < 0) fail(ErrorCode::kOutOfRange, "conic: w1=" + num(w1) + " must be >= 0", {{"w1", w1}});
   return w1 / (1 + w1);
 }
 
@@ -95,7 +99,9 @@ BsplineCurve conic_arc(Vec3 P0, Vec3 P1, Vec3 P2, double r, int dimension) {
 Vec3 conic_point(Vec3 P0, Vec3 P1, Vec3 P2, double r, double u) {
   const double w1 = conic_weight(r);
   require_finite(u, "conic_point", "u");
-  if (u < 0 || u > 1) fail("conic_point: u=" + num(u) + " is outside the domain [0, 1]");
+  if (u < 0 || u > 1)
+    fail(ErrorCode::kParameterOutsideDomain, "conic_point: u=" + num(u) + " is outside the domain [0, 1]",
+         {{"u", u}, {"a", 0}, {"b", 1}});
   // N_{i,3} on {0,0,0,1,1,1} are the quadratic Bernstein polynomials.
   const double s = 1 - u;
   const double N0 = s * s;
@@ -109,7 +115,8 @@ Vec3 conic_point(Vec3 P0, Vec3 P1, Vec3 P2, double r, double u) {
 BsplineCurve circle(Vec3 centre, double radius) {
   require_finite(centre, "circle", "centre");
   require_finite(radius, "circle", "radius");
-  if (!(radius > 0)) fail("circle: radius=" + num(radius) + " must be > 0");
+  if (!(radius > 0))
+    fail(ErrorCode::kOutOfRange, "circle: radius=" + num(radius) + " must be > 0", {{"radius", radius}});
   // The NURBS Book §7.5 (Fig. 7.16): the square's corners carry weight √2/2
   // (cos 45°, the half-angle of each 90° arc), the edge midpoints weight 1.
   const double s = std::sqrt(2.0) / 2.0;

@@ -111,7 +111,7 @@ const char* parameterization_name(Parameterization method) {
 /// (A v)^T (A C A^T)^-1 (A v) = v^T C^-1 v.
 std::vector<double> nielson_metric(const std::vector<Vec3>& points) {
   const std::string what = "nielson_metric";
-  if (points.empty()) fail(what + ": no points given");
+  if (points.empty()) fail(ErrorCode::kEmptyInput, what + ": no points given", {{"points", 0}});
   for (std::size_t i = 0; i < points.size(); ++i) require_finite(points[i], what, at("P", i));
   const double N = static_cast<double>(points.size());
   Vec3 mean;
@@ -126,8 +126,10 @@ std::vector<double> nielson_metric(const std::vector<Vec3>& points) {
   jacobi_eigen(C, V);
   const double largest = std::max({C[0][0], C[1][1], C[2][2]});
   if (!(largest > 0))
-    fail(what + ": all " + std::to_string(points.size()) + " points coincide at " + num(points[0]) +
-         " (no covariance to normalize by)");
+    fail(ErrorCode::kCoincidentPoints,
+         what + ": all " + std::to_string(points.size()) + " points coincide at " + num(points[0]) +
+             " (no covariance to normalize by)",
+         {{"points", points.size()}, {"P[0]", points[0]}});
   std::vector<double> M(9, 0.0);
   for (int k = 0; k < 3; ++k) {
     const double lambda = C[k][k];
@@ -139,7 +141,9 @@ std::vector<double> nielson_metric(const std::vector<Vec3>& points) {
 }
 
 double metric_length(const std::vector<double>& M, Vec3 v) {
-  if (M.size() != 9) fail("metric_length: the metric has " + std::to_string(M.size()) + " entries, 9 expected");
+  if (M.size() != 9)
+    fail(ErrorCode::kSizeMismatch, "metric_length: the metric has " + std::to_string(M.size()) + " entries, 9 expected",
+         {{"entries", M.size()}, {"expected", 9}});
   return std::sqrt(std::max(0.0, metric_dot(M, v, v)));
 }
 
@@ -147,7 +151,8 @@ std::vector<double> parameters(const std::vector<Vec3>& points, Parameterization
   const std::string what = std::string("parameters (") + parameterization_name(method) + ")";
   const std::size_t N = points.size();  // n + 1 points P_0..P_n
   if (N < 2)
-    fail(what + ": " + std::to_string(N) + (N == 1 ? " point" : " points") + " given, at least 2 needed");
+    fail(ErrorCode::kTooFewPoints, what + ": " + std::to_string(N) + (N == 1 ? " point" : " points") +
+         " given, at least 2 needed", {{"points", N}});
   for (std::size_t i = 0; i < N; ++i) require_finite(points[i], what, at("P", i));
 
   // The chords: P_i -> P_{i+1}, and for a closed curve also P_n -> P_0.
@@ -155,8 +160,10 @@ std::vector<double> parameters(const std::vector<Vec3>& points, Parameterization
   auto chord = [&](std::size_t i) { return points[next(i, N)] - points[i]; };
   for (std::size_t i = 0; i < chords; ++i)
     if (method != Parameterization::kUniform && chord(i) == Vec3{})
-      fail(what + ": " + at("P", i) + "=" + num(points[i]) + " and " + at("P", next(i, N)) + "=" +
-           num(points[next(i, N)]) + " coincide (a zero chord gives no parameter step)");
+      fail(ErrorCode::kCoincidentPoints,
+           what + ": " + at("P", i) + "=" + num(points[i]) + " and " + at("P", next(i, N)) + "=" +
+               num(points[next(i, N)]) + " coincide (a zero chord gives no parameter step)",
+           {{"i", i}, {"j", next(i, N)}, {at("P", i), points[i]}});
 
   // dt[i] = t_{i+1} - t_i, one step per chord.
   std::vector<double> dt(chords);
@@ -226,8 +233,10 @@ std::vector<double> parameters(const std::vector<Vec3>& points, Parameterization
     // A chord that is not zero can still have no length in the Nielson metric
     // when it leaves the span of the points by less than rounding: say so.
     if (!(dt[i] > 0) || !std::isfinite(dt[i]))
-      fail(what + ": chord " + at("P", i) + "=" + num(points[i]) + " -> " + at("P", next(i, N)) + "=" +
-           num(points[next(i, N)]) + " has step " + num(dt[i]) + " (must be positive)");
+      fail(ErrorCode::kDegenerate,
+           what + ": chord " + at("P", i) + "=" + num(points[i]) + " -> " + at("P", next(i, N)) + "=" +
+               num(points[next(i, N)]) + " has step " + num(dt[i]) + " (must be positive)",
+           {{"i", i}, {"j", next(i, N)}, {"step", dt[i]}});
     t[i + 1] = t[i] + dt[i];
   }
   return t;
@@ -235,10 +244,14 @@ std::vector<double> parameters(const std::vector<Vec3>& points, Parameterization
 
 std::vector<double> unit_interval_parameters(const std::vector<double>& t) {
   const std::string what = "unit_interval_parameters";
-  if (t.size() < 2) fail(what + ": " + std::to_string(t.size()) + " values given, at least 2 needed");
+  if (t.size() < 2)
+    fail(ErrorCode::kTooFewPoints, what + ": " + std::to_string(t.size()) + " values given, at least 2 needed",
+         {{"values", t.size()}});
   for (std::size_t i = 0; i < t.size(); ++i) require_finite(t[i], what, at("t", i));
   const double length = t.back() - t.front();
-  if (length == 0) fail(what + ": t[0] = t[" + std::to_string(t.size() - 1) + "] = " + num(t.front()));
+  if (length == 0)
+    fail(ErrorCode::kEmptyDomain, what + ": t[0] = t[" + std::to_string(t.size() - 1) + "] = " + num(t.front()),
+         {{"t[0]", t.front()}, {at("t", t.size() - 1), t.back()}});
   std::vector<double> unit(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) unit[i] = (t[i] - t.front()) / length;
   unit.back() = 1.0;  // exactly, whatever the rounding

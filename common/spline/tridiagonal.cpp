@@ -24,9 +24,11 @@ void check_system(const std::string& what, const std::vector<double>& lower, con
                   const std::vector<double>& upper, const std::vector<T>& rhs) {
   const std::size_t n = diag.size();
   if (lower.size() != n || upper.size() != n || rhs.size() != n)
-    fail(what + ": size mismatch: lower has " + std::to_string(lower.size()) + ", diag " + std::to_string(n) +
-         ", upper " + std::to_string(upper.size()) + ", rhs " + std::to_string(rhs.size()) +
-         " entries (all must be equal)");
+    fail(ErrorCode::kSizeMismatch,
+         what + ": size mismatch: lower has " + std::to_string(lower.size()) + ", diag " + std::to_string(n) +
+             ", upper " + std::to_string(upper.size()) + ", rhs " + std::to_string(rhs.size()) +
+             " entries (all must be equal)",
+         {{"lower", lower.size()}, {"diag", n}, {"upper", upper.size()}, {"rhs", rhs.size()}});
   // Test first, build the message only on failure: at("lower", i) makes a
   // std::string, and doing that eagerly for every entry cost more than the
   // solve itself (bench/README.md, natural_spline).
@@ -39,8 +41,10 @@ void check_system(const std::string& what, const std::vector<double>& lower, con
 }
 
 [[noreturn]] void zero_pivot(const std::string& what, std::size_t row, double pivot) {
-  fail(what + ": zero pivot " + num(pivot) + " in row " + std::to_string(row) +
-       " (the matrix needs pivoting or is singular)");
+  fail(ErrorCode::kSingularMatrix,
+       what + ": zero pivot " + num(pivot) + " in row " + std::to_string(row) +
+           " (the matrix needs pivoting or is singular)",
+       {{"row", row}, {"pivot", pivot}});
 }
 
 /// Thomas algorithm (Gaussian elimination on a tridiagonal matrix; ch. 1
@@ -116,7 +120,9 @@ std::vector<T> cyclic(const std::string& what, const std::vector<double>& lower,
   const std::vector<double> z = thomas(what, lower, b_diag, upper, u);
   const double denominator = 1.0 + z[0] + alpha / gamma * z[n - 1];
   if (!(std::abs(denominator) > kZeroPivot))
-    fail(what + ": the matrix is singular (Sherman–Morrison denominator 1 + v.z = " + num(denominator) + ")");
+    fail(ErrorCode::kSingularMatrix,
+         what + ": the matrix is singular (Sherman–Morrison denominator 1 + v.z = " + num(denominator) + ")",
+         {{"denominator", denominator}});
   const T factor = (y[0] + alpha / gamma * y[n - 1]) / denominator;
   std::vector<T> x(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = y[i] - z[i] * factor;

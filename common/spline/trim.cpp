@@ -20,9 +20,12 @@ std::string loop_name(std::size_t loop) { return "trim loop " + std::to_string(l
 
 using Kind = TrimLoopError::Kind;
 
-[[noreturn]] void fail_loop(Kind kind, std::size_t loop, const std::string& message, std::string summary,
-                            std::string rule = "") {
-  throw TrimLoopError(kind, loop, message, std::move(summary), std::move(rule));
+/// Throws TrimLoopError with values {loop, values...}.
+[[noreturn]] void fail_loop(ErrorCode code, Kind kind, std::size_t loop, std::initializer_list<ErrorArg> values,
+                            const std::string& message, std::string summary, std::string rule = "") {
+  std::vector<ErrorValue> all = error_values({{"loop", loop}});
+  for (const ErrorArg& a : values) a.append_to(all);
+  throw TrimLoopError(code, std::move(all), kind, loop, message, std::move(summary), std::move(rule));
 }
 
 /// One point of a flattened loop, with where it came from (for messages).
@@ -45,13 +48,15 @@ std::vector<TaggedPoint> piece_points(const TrimPiece& piece, std::size_t loop, 
   if (!piece.curve) {
     const std::size_t n = piece.polyline.size();
     if (n < 2)
-      fail_loop(Kind::kBadPiece, loop, where + " has " + std::to_string(n) + (n == 1 ? " point" : " points") +
+      fail_loop(ErrorCode::kTooFewPoints, Kind::kBadPiece, loop, {{"piece", k}, {"points", n}},
+                where + " has " + std::to_string(n) + (n == 1 ? " point" : " points") +
                 " (a polyline piece needs at least 2)", "has a polyline piece with too few points",
                 "a polyline piece needs at least 2 points");
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 p = piece.polyline[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        fail_loop(Kind::kBadPiece, loop, where + " point " + std::to_string(i) + " " + num(p) + " is not finite",
+        fail_loop(ErrorCode::kNotFinite, Kind::kBadPiece, loop, {{"piece", k}, {"point", i}, {"u", p.x}, {"v", p.y}},
+                  where + " point " + std::to_string(i) + " " + num(p) + " is not finite",
                   "has a point that is not finite");
       out.push_back({p, k, i, 0, false});
     }
@@ -60,19 +65,23 @@ std::vector<TaggedPoint> piece_points(const TrimPiece& piece, std::size_t loop, 
   const BsplineCurve& curve = *piece.curve;
   try {
     validate(curve);
-  } catch (const std::invalid_argument& e) {
-    fail_loop(Kind::kBadPiece, loop, where + " (curve): " + e.what(), "has a broken trim curve");
+  } catch (const SplineError& e) {  // the curve's own code and values, after {loop, piece}
+    std::vector<ErrorValue> values = error_values({{"loop", loop}, {"piece", k}});
+    values.insert(values.end(), e.values().begin(), e.values().end());
+    throw TrimLoopError(e.code(), std::move(values), Kind::kBadPiece, loop, where + " (curve): " + e.what(),
+                        "has a broken trim curve");
   }
   for (std::size_t i = 0; i < curve.P.size(); ++i)
     if (curve.P[i].z != 0)
-      fail_loop(Kind::kBadPiece, loop,
+      fail_loop(ErrorCode::kNotPlanar, Kind::kBadPiece, loop, {{"piece", k}, {"i", i}, {at("P", i), curve.P[i]}},
                 where + " (curve): " + at("P", i) + "=" + num(curve.P[i]) +
                     " has z != 0 (trim curves lie in the (u, v) plane)",
                 "has a trim curve off the (u, v) plane", "trim curves lie in the (u, v) plane");
   if (custom) {
     const std::vector<Vec2> points = (*custom)(curve);
     if (points.size() < 2)
-      fail_loop(Kind::kBadPiece, loop, where + " (curve): the flattener returned fewer than 2 points",
+      fail_loop(ErrorCode::kTooFewPoints, Kind::kBadPiece, loop, {{"piece", k}, {"points", points.size()}},
+                where + " (curve): the flattener returned fewer than 2 points",
                 "has a curve piece that flattens to fewer than 2 points");
     for (std::size_t i = 0; i < points.size(); ++i) out.push_back({points[i], k, i, 0, false});
     return out;
@@ -96,8 +105,12 @@ std::string describe(const TaggedPoint& q, std::size_t loop) {
 std::vector<TaggedPoint> flatten_tagged(const TrimLoop& loop, double tolerance, std::size_t index,
                                         const TrimCurveFlattener* custom) {
   if (!custom && (!(tolerance > 0) || !std::isfinite(tolerance)))
-    fail(loop_name(index) + ": flattening tolerance=" + num(tolerance) + " must be > 0");
-  if (loop.pieces.empty()) fail_loop(Kind::kBadPiece, index, loop_name(index) + ": has no pieces", "has no pieces");
+    fail(ErrorCode::kToleranceNotPositive,
+         loop_name(index) + ": flattening tolerance=" + num(tolerance) + " must be > 0",
+         {{"loop", index}, {"tolerance", tolerance}});
+  if (loop.pieces.empty())
+    fail_loop(ErrorCode::kTrimBadPiece, Kind::kBadPiece, index, {}, loop_name(index) + ": has no pieces",
+              "has no pieces");
   std::vector<std::vector<TaggedPoint>> pieces;
   for (std::size_t k = 0; k < loop.pieces.size(); ++k)
     pieces.push_back(piece_points(loop.pieces[k], index, k, tolerance, custom));
@@ -108,7 +121,8 @@ std::vector<TaggedPoint> flatten_tagged(const TrimLoop& loop, double tolerance, 
     const std::size_t next = (k + 1) % n;
     const Vec2 end = pieces[k].back().p, start = pieces[next].front().p;
     if (norm(end - start) > kTrimClosureTolerance)
-      fail_loop(Kind::kNotClosed, index,
+      fail_loop(ErrorCode::kTrimNotClosed, Kind::kNotClosed, index,
+                {{"piece", k}, {"end", end}, {"next", next}, {"start", start}},
                 loop_name(index) + ": not closed: piece " + std::to_string(k) + " ends at " + num(end) +
                     ", piece " + std::to_string(next) + " starts at " + num(start),
                 "is not closed", "every loop is closed: each piece starts where the one before ends");
@@ -174,6 +188,21 @@ struct Edge {
 
 }  // namespace
 
+ErrorCode TrimLoopError::code_of(Kind kind) {
+  switch (kind) {
+    case Kind::kBadPiece: return ErrorCode::kTrimBadPiece;
+    case Kind::kNotClosed: return ErrorCode::kTrimNotClosed;
+    case Kind::kOutsideDomain: return ErrorCode::kTrimOutsideDomain;
+    case Kind::kRepeatedPoint: return ErrorCode::kTrimRepeatedPoint;
+    case Kind::kTooFewPoints: return ErrorCode::kTooFewPoints;
+    case Kind::kCrossing: return ErrorCode::kTrimCrossing;
+    case Kind::kZeroArea: return ErrorCode::kTrimZeroArea;
+    case Kind::kOuterClockwise: return ErrorCode::kTrimOuterClockwise;
+    case Kind::kHoleCounterClockwise: return ErrorCode::kTrimHoleCounterClockwise;
+  }
+  return ErrorCode::kTrimBadPiece;
+}
+
 // ---- flattening ------------------------------------------------------------------
 
 TrimPolygon flatten_trim_loop(const TrimLoop& loop, double tolerance, std::size_t loop_index) {
@@ -231,24 +260,30 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
       const Vec2 p = poly[i];
       const std::string where = loop_name(l) + ": point " + std::to_string(i) + " " + num(p);
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        fail_loop(Kind::kBadPiece, l, where + " is not finite", "has a point that is not finite");
+        fail_loop(ErrorCode::kNotFinite, Kind::kBadPiece, l, {{"point", i}, {"u", p.x}, {"v", p.y}},
+                  where + " is not finite", "has a point that is not finite");
       if (outside(p, domain))
-        fail_loop(Kind::kOutsideDomain, l, where + " lies outside the domain " + to_string(domain),
-                  "leaves the domain", "trim loops lie in the surface's (u, v) domain");
+        fail_loop(ErrorCode::kTrimOutsideDomain, Kind::kOutsideDomain, l,
+                  {{"point", i}, {"u", p.x}, {"v", p.y}, {"u0", domain.u0}, {"u1", domain.u1}, {"v0", domain.v0},
+                   {"v1", domain.v1}},
+                  where + " lies outside the domain " + to_string(domain), "leaves the domain",
+                  "trim loops lie in the surface's (u, v) domain");
     }
     for (std::size_t i = 1; i < poly.size(); ++i)
       if (poly[i] == poly[i - 1])
-        fail_loop(Kind::kRepeatedPoint, l,
+        fail_loop(ErrorCode::kTrimRepeatedPoint, Kind::kRepeatedPoint, l,
+                  {{"point", i}, {"repeats", i - 1}, {"u", poly[i].x}, {"v", poly[i].y}},
                   loop_name(l) + ": point " + std::to_string(i) + " " + num(poly[i]) + " repeats point " +
                       std::to_string(i - 1),
                   "repeats a point");
     if (poly.size() > 1 && poly.back() == poly.front())
-      fail_loop(Kind::kRepeatedPoint, l,
+      fail_loop(ErrorCode::kTrimRepeatedPoint, Kind::kRepeatedPoint, l,
+                {{"point", poly.size() - 1}, {"repeats", 0}, {"u", poly.back().x}, {"v", poly.back().y}},
                 loop_name(l) + ": point " + std::to_string(poly.size() - 1) + " " + num(poly.back()) +
                     " repeats point 0 (a TrimPolygon does not repeat its first point)",
                 "repeats its first point");
     if (poly.size() < 3)
-      fail_loop(Kind::kTooFewPoints, l,
+      fail_loop(ErrorCode::kTooFewPoints, Kind::kTooFewPoints, l, {{"points", poly.size()}},
                 loop_name(l) + ": has " + std::to_string(poly.size()) + (poly.size() == 1 ? " point" : " points") +
                     " (a loop needs at least 3)",
                 "has too few points", "a loop needs at least 3 points");
@@ -304,7 +339,8 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
   if (best_later < edges.size()) {
     const Edge& E = edges[best_later];
     const Edge& F = edges[best_earlier];
-    fail_loop(Kind::kCrossing, E.loop,
+    fail_loop(ErrorCode::kTrimCrossing, Kind::kCrossing, E.loop,
+              {{"edge", E.index}, {"other_loop", F.loop}, {"other_edge", F.index}, {"u", best_at.x}, {"v", best_at.y}},
               loop_name(E.loop) + ": edge " + std::to_string(E.index) + " " + num(E.a) + "-" + num(E.b) +
                   " crosses edge " + std::to_string(F.index) + " of loop " + std::to_string(F.loop) + " at " +
                   num(best_at),
@@ -316,7 +352,8 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
   for (std::size_t l = 0; l < polygons.size(); ++l) {
     info[l].area = signed_area(polygons[l]);
     if (info[l].area == 0)
-      fail_loop(Kind::kZeroArea, l, loop_name(l) + ": has zero area (signed area 0)", "has zero area");
+      fail_loop(ErrorCode::kTrimZeroArea, Kind::kZeroArea, l, {{"area", info[l].area}},
+                loop_name(l) + ": has zero area (signed area 0)", "has zero area");
   }
   for (std::size_t l = 0; l < polygons.size(); ++l) {
     // Loops do not meet, so any point of loop l is strictly inside or outside another loop.
@@ -331,11 +368,13 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
     const bool outer = info[l].depth % 2 == 0;
     const std::string area = "(signed area " + num(info[l].area) + ")";
     if (outer && info[l].area < 0)
-      fail_loop(Kind::kOuterClockwise, l,
+      fail_loop(ErrorCode::kTrimOuterClockwise, Kind::kOuterClockwise, l,
+                {{"area", info[l].area}, {"depth", info[l].depth}},
                 loop_name(l) + " (outer) runs clockwise " + area + "; outer loops must run counter-clockwise",
                 "(outer) runs clockwise", "outer loops must run counter-clockwise");
     if (!outer && info[l].area > 0)
-      fail_loop(Kind::kHoleCounterClockwise, l,
+      fail_loop(ErrorCode::kTrimHoleCounterClockwise, Kind::kHoleCounterClockwise, l,
+                {{"area", info[l].area}, {"depth", info[l].depth}, {"parent", info[l].parent}},
                 loop_name(l) + " (hole in loop " + std::to_string(info[l].parent) + ") runs counter-clockwise " +
                     area + "; holes must run clockwise",
                 "(a hole) runs counter-clockwise", "holes must run clockwise");
@@ -346,15 +385,24 @@ std::vector<TrimLoopInfo> validate_trim_polygons(const std::vector<TrimPolygon>&
 std::vector<TrimPolygon> validate_trim_loops(const std::vector<TrimLoop>& loops, UvDomain domain, double tolerance) {
   if (!(domain.u0 < domain.u1) || !(domain.v0 < domain.v1) || !std::isfinite(domain.u0) || !std::isfinite(domain.u1) ||
       !std::isfinite(domain.v0) || !std::isfinite(domain.v1))
-    fail("trim domain " + to_string(domain) + " is empty or not finite");
+    fail(std::isfinite(domain.u0) && std::isfinite(domain.u1) && std::isfinite(domain.v0) && std::isfinite(domain.v1)
+             ? ErrorCode::kEmptyDomain
+             : ErrorCode::kNotFinite,
+         "trim domain " + to_string(domain) + " is empty or not finite",
+         {{"u0", domain.u0}, {"u1", domain.u1}, {"v0", domain.v0}, {"v1", domain.v1}});
   std::vector<TrimPolygon> polygons;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     // Pieces and closure (flatten_tagged), then the domain: the message can name the piece.
     TrimPolygon polygon;
     for (const TaggedPoint& q : flatten_tagged(loops[l], tolerance, l, nullptr)) {
-      if (outside(q.p, domain))
-        fail_loop(Kind::kOutsideDomain, l, describe(q, l) + " lies outside the domain " + to_string(domain),
-                  "leaves the domain", "trim loops lie in the surface's (u, v) domain");
+      if (outside(q.p, domain)) {
+        const double where = q.from_curve ? q.t : static_cast<double>(q.index);  // the curve's t, or the point
+        fail_loop(ErrorCode::kTrimOutsideDomain, Kind::kOutsideDomain, l,
+                  {{"piece", q.piece}, {q.from_curve ? "t" : "point", where}, {"u", q.p.x}, {"v", q.p.y},
+                   {"u0", domain.u0}, {"u1", domain.u1}, {"v0", domain.v0}, {"v1", domain.v1}},
+                  describe(q, l) + " lies outside the domain " + to_string(domain), "leaves the domain",
+                  "trim loops lie in the surface's (u, v) domain");
+      }
       polygon.push_back(q.p);
     }
     polygons.push_back(std::move(polygon));

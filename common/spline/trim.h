@@ -6,7 +6,8 @@
 // counter-clockwise, a hole inside it clockwise, an island inside the hole
 // counter-clockwise again; every loop is closed and no two curves cross.
 // GLU reports a broken rule as a NURBS error number; this core throws
-// std::invalid_argument with a message that names the loop and the point,
+// TrimLoopError (a SplineError, errors.h: a code, the values, and a message
+// that names the loop and the point),
 // e.g. "trim loop 1: not closed: piece 2 ends at (0.5, 0.9), piece 0 starts at (0.5, 1)".
 //
 // Notation: a TrimLoop (types.h) is a chain of pieces, each a polyline or a 2D
@@ -21,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "spline/errors.h"
 #include "spline/types.h"
 #include "spline/vec.h"
 
@@ -49,8 +51,11 @@ inline constexpr double kTrimFlattenTolerance = 1e-4;
 
 /// What the flattening and validation below throw for a bad loop: the
 /// message documented at each function (what()), and the same as data, so a
-/// program shows the loop and the rule without parsing the text.
-struct TrimLoopError : std::invalid_argument {
+/// program shows the loop and the rule without parsing the text. A SplineError
+/// (errors.h): code() is the precondition (kTrimNotClosed, ..., or for a bad
+/// piece the piece's own: kTooFewPoints, kNotFinite, kNotPlanar, or whatever
+/// its curve broke), values() start with {loop, ...}.
+struct TrimLoopError : SplineError {
   enum class Kind {
     kBadPiece,              // a piece without points, not finite, or a broken curve
     kNotClosed,             // a piece ends where the next does not start
@@ -62,9 +67,20 @@ struct TrimLoopError : std::invalid_argument {
     kOuterClockwise,        // an outer loop (even depth) runs clockwise
     kHoleCounterClockwise,  // a hole (odd depth) runs counter-clockwise
   };
+  /// The code a kind stands for when no finer one is given (kBadPiece: kTrimBadPiece).
+  static ErrorCode code_of(Kind kind);
+  /// code_of(kind), values {loop}.
   TrimLoopError(Kind kind, std::size_t loop, const std::string& message, std::string summary,
                 std::string rule = "")
-      : std::invalid_argument(message), kind(kind), loop(loop), summary(std::move(summary)), rule(std::move(rule)) {}
+      : TrimLoopError(code_of(kind), {{"loop", static_cast<double>(loop)}}, kind, loop, message,
+                      std::move(summary), std::move(rule)) {}
+  TrimLoopError(ErrorCode code, std::vector<ErrorValue> values, Kind kind, std::size_t loop,
+                const std::string& message, std::string summary, std::string rule = "")
+      : SplineError(code, message, std::move(values)),
+        kind(kind),
+        loop(loop),
+        summary(std::move(summary)),
+        rule(std::move(rule)) {}
   Kind kind;
   std::size_t loop;     // the loop at fault (for a crossing, the later of the two)
   std::string summary;  // a few words without numbers: "runs clockwise", "is not closed"
