@@ -1,7 +1,8 @@
 // common/spline/fast/curve_batch.h — the fast layer for curves: many points
 // (and first derivatives) of one curve at once. Computes what curve_point and
-// curve_derivs (bspline.h) compute; tested to agree with them
-// (tests/spline/fast_test.cpp); how it is made fast: fast/curve_batch.cpp.
+// curve_derivs (bspline.h) compute; tested to agree with them to 1e-12 of the
+// curve's size (CurvePoints.BatchedEvaluatorEqualsPerPointEvaluator in
+// tests/spline/bspline_test.cpp); how it is made fast: fast/curve_batch.cpp.
 #pragma once
 
 #include <vector>

@@ -3,8 +3,10 @@
 // fall into one knot span). Internal: not part of the core's API.
 //
 // The fast layer (fast/*.cpp) computes what the textbook layer computes, for
-// many parameters at once, and is tested to agree with it (points to 7e-15,
-// derivatives to 1e-12; tests/spline/fast_test.cpp). It is the only place with
+// many parameters at once, and is tested to agree with it: curve points and
+// derivatives to 1e-12 of the curve's size (tests/spline/bspline_test.cpp),
+// surface points to 1e-11 relative and normals to 1e-9 (SurfaceGrid in
+// tests/spline/surface_test.cpp). It is the only place with
 // target_clones and unroll pragmas. bench/README.md has the measurements.
 #pragma once
 
