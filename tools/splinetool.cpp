@@ -128,7 +128,9 @@ std::string point_text(const Vec3& p) {
 
 Json point_json(const Vec3& p, int dimension) {
   for (double c : {p.x, p.y, p.z})
-    if (!std::isfinite(c)) fail("a result is not finite: " + point_text(p) + " (coordinates too large for doubles?)");
+    if (!std::isfinite(c))
+      fail(ErrorCode::kNotFinite,
+           "a result is not finite: " + point_text(p) + " (coordinates too large for doubles?)", {{"result", p}});
   Json out = Json::array({p.x, p.y});
   if (dimension == 3) out.push_back(p.z);
   return out;

@@ -545,7 +545,8 @@ BsplineSurface surface_of(SplineFile f, const std::string& source) {
 
 Json number_json(double x) {
   if (!std::isfinite(x))
-    spline::fail("cannot write " + shortest_text(x) + " to a JSON file (numbers must be finite)");
+    spline::fail(spline::ErrorCode::kNotFinite,
+                 "cannot write " + shortest_text(x) + " to a JSON file (numbers must be finite)", {{"value", x}});
   return Json(x);
 }
 
@@ -558,12 +559,16 @@ Json numbers_json(const std::vector<double>& xs) {
 Json point_json(const Vec3& p, int dimension, const std::string& name) {
   Json out = Json::array({number_json(p.x), number_json(p.y)});
   if (dimension == 3) out.push_back(number_json(p.z));
-  else if (p.z != 0) spline::fail("a 2D spline has " + name + " = " + point_text(p) + " with z != 0");
+  else if (p.z != 0)
+    spline::fail(spline::ErrorCode::kNotPlanar, "a 2D spline has " + name + " = " + point_text(p) + " with z != 0",
+                 {{name, p}});
   return out;
 }
 
 Json points_json(const std::vector<Vec3>& P, int dimension) {
-  if (dimension != 2 && dimension != 3) spline::fail("dimension " + std::to_string(dimension) + " (must be 2 or 3)");
+  if (dimension != 2 && dimension != 3)
+    spline::fail(spline::ErrorCode::kDimension, "dimension " + std::to_string(dimension) + " (must be 2 or 3)",
+                 {{"dimension", dimension}});
   Json out = Json::array();
   for (std::size_t i = 0; i < P.size(); ++i) out.push_back(point_json(P[i], dimension, spline::at("P", i)));
   return out;
@@ -673,10 +678,14 @@ Json to_json(const BezierCurve& c) {
 
 Json to_json(const BsplineSurface& s) {
   if (s.nu < 1 || s.nv < 1 || s.P.size() != static_cast<std::size_t>(s.nu) * static_cast<std::size_t>(s.nv))
-    spline::fail("surface: " + std::to_string(s.P.size()) + " points, need nu * nv = " + std::to_string(s.nu) +
-                 " * " + std::to_string(s.nv));
+    spline::fail(spline::ErrorCode::kSizeMismatch,
+                 "surface: " + std::to_string(s.P.size()) + " points, need nu * nv = " + std::to_string(s.nu) + " * " +
+                     std::to_string(s.nv),
+                 {{"P", s.P.size()}, {"nu", s.nu}, {"nv", s.nv}});
   if (s.rational() && s.w.size() != s.P.size())
-    spline::fail("surface: " + std::to_string(s.w.size()) + " weights, need " + std::to_string(s.P.size()));
+    spline::fail(spline::ErrorCode::kWeightCount,
+                 "surface: " + std::to_string(s.w.size()) + " weights, need " + std::to_string(s.P.size()),
+                 {{"w", s.w.size()}, {"points", s.P.size()}});
   Json out = Json::object();
   out["type"] = "bspline_surface";
   out["degree_u"] = s.p;
@@ -738,7 +747,9 @@ void require_finite_numbers(const Json& value) {
     const Json* v = stack.back();
     stack.pop_back();
     if (v->is_number_float() && !std::isfinite(v->get<double>()))
-      spline::fail("cannot write " + shortest_text(v->get<double>()) + " to JSON (numbers must be finite)");
+      spline::fail(spline::ErrorCode::kNotFinite,
+                   "cannot write " + shortest_text(v->get<double>()) + " to JSON (numbers must be finite)",
+                   {{"value", v->get<double>()}});
     if (v->is_structured())
       for (const Json& child : *v) stack.push_back(&child);
   }

@@ -23,15 +23,22 @@ int size_of(const std::vector<double>& U) { return static_cast<int>(U.size()); }
 
 /// The cheap checks every raw (p, U) routine makes.
 void check_degree_and_knots(const char* fn, int n, int p, const std::vector<double>& U) {
-  if (p < 0) fail(std::string(fn) + ": degree p=" + std::to_string(p) + " must be >= 0");
+  if (p < 0)
+    fail(ErrorCode::kDegreeTooLow, std::string(fn) + ": degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
   if (p > kMaxDegree)
-    fail(std::string(fn) + ": degree p=" + std::to_string(p) + " exceeds kMaxDegree=" + std::to_string(kMaxDegree));
+    fail(ErrorCode::kDegreeTooHigh,
+         std::string(fn) + ": degree p=" + std::to_string(p) + " exceeds kMaxDegree=" + std::to_string(kMaxDegree),
+         {{"p", p}});
   if (n < p)
-    fail(std::string(fn) + ": n=" + std::to_string(n) + " < p=" + std::to_string(p) +
-         " (needs at least p + 1 control points)");
+    fail(ErrorCode::kTooFewPoints,
+         std::string(fn) + ": n=" + std::to_string(n) + " < p=" + std::to_string(p) +
+             " (needs at least p + 1 control points)",
+         {{"n", n}, {"p", p}});
   if (size_of(U) != n + p + 2)
-    fail(std::string(fn) + ": knot vector has " + std::to_string(U.size()) + " knots, needs n + p + 2 = " +
-         std::to_string(n + p + 2) + " (n=" + std::to_string(n) + ", p=" + std::to_string(p) + ")");
+    fail(ErrorCode::kKnotCount,
+         std::string(fn) + ": knot vector has " + std::to_string(U.size()) + " knots, needs n + p + 2 = " +
+             std::to_string(n + p + 2) + " (n=" + std::to_string(n) + ", p=" + std::to_string(p) + ")",
+         {{"knots", U.size()}, {"needed", n + p + 2}});
 }
 
 /// U[i] <= u < U[i+1] by binary search, for U[p] <= u < U[n+1] (A2.1's loop).
@@ -86,7 +93,9 @@ int find_span(int n, int p, double u, const std::vector<double>& U) {
   check_degree_and_knots("find_span", n, p, U);
   require_finite(u, "find_span", "u");
   if (!(U[p] < U[n + 1]))
-    fail("find_span: the domain [U[p], U[n+1]] = [" + num(U[p]) + ", " + num(U[n + 1]) + "] is empty");
+    fail(ErrorCode::kEmptyDomain,
+         "find_span: the domain [U[p], U[n+1]] = [" + num(U[p]) + ", " + num(U[n + 1]) + "] is empty",
+         {{"U[p]", U[p]}, {"U[n+1]", U[n + 1]}});
   require_in_domain(u, domain(p, U));
   if (u == U[n + 1]) return last_span(n, p, U);  // the special case of A2.1
   return span_right(n, p, u, U);
@@ -126,10 +135,14 @@ void basis_triangle(int i, double u, int p, const std::vector<double>& U, BasisT
 
 void basis_funs(int i, double u, int p, const std::vector<double>& U, double* N) {
   const int m = size_of(U) - 1;
-  if (p < 0 || p > kMaxDegree) fail("basis_funs: degree p=" + std::to_string(p) + " out of [0, kMaxDegree]");
+  if (p < 0 || p > kMaxDegree)
+    fail(p < 0 ? ErrorCode::kDegreeTooLow : ErrorCode::kDegreeTooHigh,
+         "basis_funs: degree p=" + std::to_string(p) + " out of [0, kMaxDegree]", {{"p", p}});
   if (i < p || i + p + 1 > m)
-    fail("basis_funs: span i=" + std::to_string(i) + " out of range [p, m - p - 1] = [" + std::to_string(p) + ", " +
-         std::to_string(m - p - 1) + "]");
+    fail(ErrorCode::kIndexOutOfRange,
+         "basis_funs: span i=" + std::to_string(i) + " out of range [p, m - p - 1] = [" + std::to_string(p) + ", " +
+             std::to_string(m - p - 1) + "]",
+         {{"i", i}, {"p", p}, {"m", m}});
   BasisTriangle ndu;
   basis_triangle(i, u, p, U, ndu);
   for (int r = 0; r <= p; ++r) N[r] = ndu[r][p];
@@ -143,13 +156,20 @@ std::vector<double> basis_funs(int i, double u, int p, const std::vector<double>
 
 void ders_basis_funs(int i, double u, int p, int d, const std::vector<double>& U, double* ders) {
   const int m = size_of(U) - 1;
-  if (p < 0) fail("ders_basis_funs: degree p=" + std::to_string(p) + " must be >= 0");
+  if (p < 0)
+    fail(ErrorCode::kDegreeTooLow, "ders_basis_funs: degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
   if (p > kMaxDegree)
-    fail("ders_basis_funs: degree p=" + std::to_string(p) + " exceeds kMaxDegree=" + std::to_string(kMaxDegree));
-  if (d < 0) fail("ders_basis_funs: derivative order d=" + std::to_string(d) + " must be >= 0");
+    fail(ErrorCode::kDegreeTooHigh,
+         "ders_basis_funs: degree p=" + std::to_string(p) + " exceeds kMaxDegree=" + std::to_string(kMaxDegree),
+         {{"p", p}});
+  if (d < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder,
+         "ders_basis_funs: derivative order d=" + std::to_string(d) + " must be >= 0", {{"d", d}});
   if (i < p || i + p + 1 > m)
-    fail("ders_basis_funs: span i=" + std::to_string(i) + " out of range [p, m - p - 1] = [" + std::to_string(p) +
-         ", " + std::to_string(m - p - 1) + "]");
+    fail(ErrorCode::kIndexOutOfRange,
+         "ders_basis_funs: span i=" + std::to_string(i) + " out of range [p, m - p - 1] = [" + std::to_string(p) +
+             ", " + std::to_string(m - p - 1) + "]",
+         {{"i", i}, {"p", p}, {"m", m}});
   const int w = p + 1;  // ders[k * w + j]: the k-th derivative of N_{i-p+j,p}
   std::fill(ders, ders + (d + 1) * w, 0.0);
   const int nd = std::min(d, p);  // derivatives above p vanish
@@ -205,10 +225,13 @@ std::vector<std::vector<double>> ders_basis_funs(int i, double u, int p, int d, 
 
 double one_basis_fun(int i, double u, int p, const std::vector<double>& U) {
   const int m = size_of(U) - 1;
-  if (p < 0) fail("one_basis_fun: degree p=" + std::to_string(p) + " must be >= 0");
+  if (p < 0)
+    fail(ErrorCode::kDegreeTooLow, "one_basis_fun: degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
   if (i < 0 || i > m - p - 1)
-    fail("one_basis_fun: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
-         std::to_string(m - p - 1) + "]");
+    fail(ErrorCode::kIndexOutOfRange,
+         "one_basis_fun: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
+             std::to_string(m - p - 1) + "]",
+         {{"i", i}, {"p", p}, {"m", m}});
   require_finite(u, "one_basis_fun", "u");
   // The book special-cases u == U[0] and u == U[m]; the active interval rule
   // (find_span's, extended to [U[0], U[m]]) covers both.
@@ -248,10 +271,12 @@ double cox_de_boor_rec(int i, int k, double u, const std::vector<double>& U, int
 
 double cox_de_boor(int i, double u, int p, const std::vector<double>& U) {
   const int m = size_of(U) - 1;
-  if (p < 0) fail("cox_de_boor: degree p=" + std::to_string(p) + " must be >= 0");
+  if (p < 0) fail(ErrorCode::kDegreeTooLow, "cox_de_boor: degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
   if (i < 0 || i > m - p - 1)
-    fail("cox_de_boor: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
-         std::to_string(m - p - 1) + "]");
+    fail(ErrorCode::kIndexOutOfRange,
+         "cox_de_boor: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
+             std::to_string(m - p - 1) + "]",
+         {{"i", i}, {"p", p}, {"m", m}});
   require_finite(u, "cox_de_boor", "u");
   return cox_de_boor_rec(i, p, u, U, active_interval(u, p, U));
 }
@@ -259,7 +284,9 @@ double cox_de_boor(int i, double u, int p, const std::vector<double>& U) {
 std::vector<double> all_basis_funs(double u, int p, const std::vector<double>& U) {
   const int m = size_of(U) - 1;
   if (p < 0 || m - p - 1 < 0)
-    fail("all_basis_funs: degree p=" + std::to_string(p) + " does not fit " + std::to_string(U.size()) + " knots");
+    fail(p < 0 ? ErrorCode::kDegreeTooLow : ErrorCode::kKnotCount,
+         "all_basis_funs: degree p=" + std::to_string(p) + " does not fit " + std::to_string(U.size()) + " knots",
+         {{"p", p}, {"knots", U.size()}});
   require_finite(u, "all_basis_funs", "u");
   // The Cox–de Boor table, one degree at a time (ch. 1 §1.6).
   std::vector<double> N(m, 0.0);

@@ -35,17 +35,26 @@ namespace {
 
 void validate_as(const BezierSurface& s, const std::string& what) {
   if (s.n < 0 || s.m < 0)
-    fail(what + ": degrees (n, m)=" + ij_text(s.n, s.m) + " must not be negative");
+    fail(ErrorCode::kDegreeTooLow, what + ": degrees (n, m)=" + ij_text(s.n, s.m) + " must not be negative",
+         {{"n", s.n}, {"m", s.m}});
   const std::size_t count = (uz(s.n) + 1) * (uz(s.m) + 1);
   if (s.P.size() != count)
-    fail(what + ": P.size()=" + std::to_string(s.P.size()) + " != (n+1)*(m+1) = " + std::to_string(s.n + 1) + "*" +
-         std::to_string(s.m + 1) + " = " + std::to_string(count));
+    fail(ErrorCode::kSizeMismatch,
+         what + ": P.size()=" + std::to_string(s.P.size()) + " != (n+1)*(m+1) = " + std::to_string(s.n + 1) + "*" +
+             std::to_string(s.m + 1) + " = " + std::to_string(count),
+         {{"P", s.P.size()}, {"n", s.n}, {"m", s.m}});
   require_finite(s.a, what, "a");
   require_finite(s.b, what, "b");
   require_finite(s.c, what, "c");
   require_finite(s.d, what, "d");
-  if (!(s.a < s.b)) fail(what + ": u interval [a, b] = [" + num(s.a) + ", " + num(s.b) + "] is empty (need a < b)");
-  if (!(s.c < s.d)) fail(what + ": v interval [c, d] = [" + num(s.c) + ", " + num(s.d) + "] is empty (need c < d)");
+  if (!(s.a < s.b))
+    fail(ErrorCode::kEmptyDomain,
+         what + ": u interval [a, b] = [" + num(s.a) + ", " + num(s.b) + "] is empty (need a < b)",
+         {{"a", s.a}, {"b", s.b}});
+  if (!(s.c < s.d))
+    fail(ErrorCode::kEmptyDomain,
+         what + ": v interval [c, d] = [" + num(s.c) + ", " + num(s.d) + "] is empty (need c < d)",
+         {{"c", s.c}, {"d", s.d}});
   for (int i = 0; i <= s.n; ++i)
     for (int j = 0; j <= s.m; ++j)
       if (!finite(s.point(i, j))) require_finite(s.point(i, j), what, "P" + ij_text(i, j));
@@ -209,7 +218,9 @@ Vec3 surface_normal(const BezierSurface& surface, double u, double v) {
 BezierSurface derivative_surface(const BezierSurface& surface, int k, int l) {
   const std::string what = "derivative_surface";
   validate_as(surface, what);
-  if (k < 0 || l < 0) fail(what + ": derivative orders (k, l)=" + ij_text(k, l) + " must not be negative");
+  if (k < 0 || l < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder,
+         what + ": derivative orders (k, l)=" + ij_text(k, l) + " must not be negative", {{"k", k}, {"l", l}});
   // Along u: every column becomes its k-th derivative curve (bezier_derivative:
   // n!/(n-k)! Delta^k / (b-a)^k); then along v every row its l-th.
   std::vector<BezierCurve> columns;
@@ -259,7 +270,9 @@ BsplineSurface to_bspline(const BezierSurface& surface) {
   const std::string what = "to_bspline (Bezier surface)";
   validate_as(surface, what);
   if (surface.n < 1 || surface.m < 1)
-    fail(what + ": degrees (n, m)=" + ij_text(surface.n, surface.m) + " (a B-spline surface needs degree >= 1)");
+    fail(ErrorCode::kDegreeTooLow,
+         what + ": degrees (n, m)=" + ij_text(surface.n, surface.m) + " (a B-spline surface needs degree >= 1)",
+         {{"n", surface.n}, {"m", surface.m}});
   BsplineSurface out;
   out.p = surface.n;
   out.q = surface.m;
@@ -277,11 +290,15 @@ BezierSurface interpolating_bezier_surface(const std::vector<double>& us, const 
                                            const std::vector<Vec3>& points) {
   const std::string what = "interpolating_bezier_surface";
   if (us.size() < 2 || vs.size() < 2)
-    fail(what + ": " + std::to_string(us.size()) + " u and " + std::to_string(vs.size()) +
-         " v parameters (need at least 2 each way)");
+    fail(ErrorCode::kTooFewPoints,
+         what + ": " + std::to_string(us.size()) + " u and " + std::to_string(vs.size()) +
+             " v parameters (need at least 2 each way)",
+         {{"us", us.size()}, {"vs", vs.size()}});
   if (points.size() != us.size() * vs.size())
-    fail(what + ": points.size()=" + std::to_string(points.size()) + " != us.size()*vs.size() = " +
-         std::to_string(us.size()) + "*" + std::to_string(vs.size()));
+    fail(ErrorCode::kSizeMismatch,
+         what + ": points.size()=" + std::to_string(points.size()) +
+             " != us.size()*vs.size() = " + std::to_string(us.size()) + "*" + std::to_string(vs.size()),
+         {{"points", points.size()}, {"us", us.size()}, {"vs", vs.size()}});
   require_nodes(us, what, "us");
   require_nodes(vs, what, "vs");
   const std::size_t rows = us.size(), cols = vs.size();
@@ -318,10 +335,14 @@ std::vector<std::vector<Vec3>> continuation_rows(const BezierSurface& a, int k, 
   const bool along_u = direction == SurfaceDirection::U;
   const int degree = along_u ? a.n : a.m;
   if (k < 0 || k > degree)
-    fail(what + ": continuity k=" + std::to_string(k) + " must lie in [0, " + std::to_string(degree) +
-         "] (the degree across the edge)");
+    fail(ErrorCode::kOutOfRange,
+         what + ": continuity k=" + std::to_string(k) + " must lie in [0, " + std::to_string(degree) +
+             "] (the degree across the edge)",
+         {{"k", k}, {"degree", degree}});
   require_finite(next_length, what, "next_length");
-  if (!(next_length > 0)) fail(what + ": next_length=" + num(next_length) + " must be > 0");
+  if (!(next_length > 0))
+    fail(ErrorCode::kOutOfRange, what + ": next_length=" + num(next_length) + " must be > 0",
+         {{"next_length", next_length}});
   // The neighbour's far end in a's local parameter: tau = (s2 - s0) / (s1 - s0).
   const double tau = 1 + next_length / (along_u ? a.b - a.a : a.d - a.c);
   const int lines = along_u ? a.m + 1 : a.n + 1;
@@ -344,12 +365,15 @@ BezierSurface joined_patch(const BezierSurface& a, const BezierSurface& next, in
   validate_as(a, what + " (patch a)");
   validate_as(next, what + " (patch next)");
   if (a.n != next.n || a.m != next.m)
-    fail(what + ": degrees " + ij_text(next.n, next.m) + " of next differ from " + ij_text(a.n, a.m) + " of a");
+    fail(ErrorCode::kPiecesDoNotJoin,
+         what + ": degrees " + ij_text(next.n, next.m) + " of next differ from " + ij_text(a.n, a.m) + " of a",
+         {{"n", next.n}, {"m", next.m}, {"a.n", a.n}, {"a.m", a.m}});
   const bool along_u = direction == SurfaceDirection::U;
   if (along_u ? (a.c != next.c || a.d != next.d) : (a.a != next.a || a.b != next.b))
-    fail(what + ": the intervals along the shared edge differ: " +
-         (along_u ? "[" + num(a.c) + ", " + num(a.d) + "] vs [" + num(next.c) + ", " + num(next.d) + "]"
-                  : "[" + num(a.a) + ", " + num(a.b) + "] vs [" + num(next.a) + ", " + num(next.b) + "]"));
+    fail(ErrorCode::kPiecesDoNotJoin,
+         what + ": the intervals along the shared edge differ: " +
+             (along_u ? "[" + num(a.c) + ", " + num(a.d) + "] vs [" + num(next.c) + ", " + num(next.d) + "]"
+                      : "[" + num(a.a) + ", " + num(a.b) + "] vs [" + num(next.a) + ", " + num(next.b) + "]"));
   const double length = along_u ? next.b - next.a : next.d - next.c;
   const std::vector<std::vector<Vec3>> rows = continuation_rows(a, k, length, direction);
   BezierSurface out = next;
@@ -377,10 +401,13 @@ BezierSurface constant_twist_patch(const BezierCurve& edge_u, const BezierCurve&
   out.n = static_cast<int>(edge_u.P.size()) - 1;
   out.m = static_cast<int>(edge_v.P.size()) - 1;
   if (out.n < 1 || out.m < 1)
-    fail(what + ": degrees " + ij_text(out.n, out.m) + " (the edges need at least 2 points each)");
+    fail(ErrorCode::kTooFewPoints,
+         what + ": degrees " + ij_text(out.n, out.m) + " (the edges need at least 2 points each)",
+         {{"n", out.n}, {"m", out.m}});
   if (edge_u.P[0] != edge_v.P[0])
-    fail(what + ": the edges start at different corners: edge_u " + num(edge_u.P[0]) + ", edge_v " +
-         num(edge_v.P[0]));
+    fail(ErrorCode::kPiecesDoNotJoin,
+         what + ": the edges start at different corners: edge_u " + num(edge_u.P[0]) + ", edge_v " + num(edge_v.P[0]),
+         {{"edge_u.P[0]", edge_u.P[0]}, {"edge_v.P[0]", edge_v.P[0]}});
   out.a = edge_u.a, out.b = edge_u.b, out.c = edge_v.a, out.d = edge_v.b;
   out.P.resize(uz((out.n + 1) * (out.m + 1)));
   // Each cell's share of the twist: X_uv = n m Delta^{11} b / ((b - a)(d - c)).

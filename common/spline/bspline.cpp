@@ -26,22 +26,28 @@ int span_at(const BsplineCurve& c, double u, Side side) {
 // ---- checks -----------------------------------------------------------------
 
 void validate(const BsplineCurve& curve) {
-  if (curve.P.empty()) fail("curve: no control points (empty input)");
+  if (curve.P.empty()) fail(ErrorCode::kEmptyInput, "curve: no control points (empty input)");
   if (curve.dimension != 2 && curve.dimension != 3)
-    fail("curve: dimension=" + std::to_string(curve.dimension) + " must be 2 or 3");
+    fail(ErrorCode::kDimension, "curve: dimension=" + std::to_string(curve.dimension) + " must be 2 or 3",
+         {{"dimension", curve.dimension}});
   validate_knots(curve.p, static_cast<int>(curve.P.size()), curve.U, "knot vector");
   for (std::size_t i = 0; i < curve.P.size(); ++i) {
     if (!finite(curve.P[i])) require_finite(curve.P[i], "control points", at("P", i));
     if (curve.dimension == 2 && curve.P[i].z != 0)
-      fail("control points: " + at("P", i) + "=" + num(curve.P[i]) + " has z != 0 in a 2D curve");
+      fail(ErrorCode::kNotPlanar, "control points: " + at("P", i) + "=" + num(curve.P[i]) + " has z != 0 in a 2D curve",
+           {{"i", i}, {at("P", i), curve.P[i]}});
   }
   if (curve.rational()) {
     if (curve.w.size() != curve.P.size())
-      fail("weights: " + std::to_string(curve.w.size()) + " weights for " + std::to_string(curve.P.size()) +
-           " control points (need one per point, or none)");
+      fail(ErrorCode::kWeightCount,
+           "weights: " + std::to_string(curve.w.size()) + " weights for " + std::to_string(curve.P.size()) +
+               " control points (need one per point, or none)",
+           {{"weights", curve.w.size()}, {"points", curve.P.size()}});
     for (std::size_t i = 0; i < curve.w.size(); ++i) {
       if (!std::isfinite(curve.w[i])) require_finite(curve.w[i], "weights", at("w", i));
-      if (!(curve.w[i] > 0)) fail("weights: " + at("w", i) + "=" + num(curve.w[i]) + " must be > 0");
+      if (!(curve.w[i] > 0))
+        fail(ErrorCode::kWeightNotPositive, "weights: " + at("w", i) + "=" + num(curve.w[i]) + " must be > 0",
+             {{"i", i}, {at("w", i), curve.w[i]}});
     }
   }
 }
@@ -55,8 +61,10 @@ ParamInterval domain(const BsplineCurve& curve) {
 
 BsplineCurve periodic_curve(const std::vector<Vec3>& points, int p, int dimension) {
   if (points.size() < 2)
-    fail("periodic_curve: needs at least 2 points, got " + std::to_string(points.size()));
-  if (p < 1) fail("periodic_curve: degree p=" + std::to_string(p) + " must be >= 1");
+    fail(ErrorCode::kTooFewPoints, "periodic_curve: needs at least 2 points, got " + std::to_string(points.size()),
+         {{"points", points.size()}});
+  if (p < 1)
+    fail(ErrorCode::kDegreeTooLow, "periodic_curve: degree p=" + std::to_string(p) + " must be >= 1", {{"p", p}});
   BsplineCurve c;
   c.p = p;
   c.dimension = dimension;
@@ -73,10 +81,12 @@ BsplineCurve clamped_curve(const std::vector<Vec3>& points, int p, int dimension
   c.p = p;
   c.dimension = dimension;
   c.P = points;
-  if (points.empty()) fail("clamped_curve: no control points (empty input)");
+  if (points.empty()) fail(ErrorCode::kEmptyInput, "clamped_curve: no control points (empty input)");
   if (p < 1 || p >= static_cast<int>(points.size()))
-    fail("clamped_curve: degree p=" + std::to_string(p) + " needs 1 <= p < number of points (" +
-         std::to_string(points.size()) + ")");
+    fail(p < 1 ? ErrorCode::kDegreeTooLow : ErrorCode::kTooFewPoints,
+         "clamped_curve: degree p=" + std::to_string(p) + " needs 1 <= p < number of points (" +
+             std::to_string(points.size()) + ")",
+         {{"p", p}, {"points", points.size()}});
   c.U = clamped_uniform_knots(c.n(), p);
   validate(c);
   return c;
@@ -135,7 +145,9 @@ std::vector<Pt> derivs_impl(const BsplineCurve& c, double u, int d, Side side, P
 std::vector<Vec3> rational_curve_derivs(const BsplineCurve& curve, double u, int d, Side side) {
   validate(curve);
   check_param(u, domain(curve.p, curve.U));
-  if (d < 0) fail("curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0");
+  if (d < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder, "curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0",
+         {{"d", d}});
   // Derivatives of Cw = (A, w) (A3.2 in homogeneous space), then A4.2:
   // C^(k) = (A^(k) - sum_{i=1..k} Bin(k,i) w^(i) C^(k-i)) / w.
   const auto Cw = derivs_impl<Vec4>(curve, u, d, side, [&](int i) {
@@ -154,7 +166,9 @@ std::vector<Vec3> curve_derivs(const BsplineCurve& curve, double u, int d, Side 
   if (curve.rational()) return rational_curve_derivs(curve, u, d, side);
   validate(curve);
   check_param(u, domain(curve.p, curve.U));
-  if (d < 0) fail("curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0");
+  if (d < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder, "curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0",
+         {{"d", d}});
   return derivs_impl<Vec3>(curve, u, d, side, [&](int i) { return curve.P[i]; });
 }
 
@@ -195,7 +209,9 @@ DeBoorConstruction de_boor(const BsplineCurve& curve, double u) {
 
 std::vector<double> uniform_params(const BsplineCurve& curve, int count) {
   const ParamInterval dom = domain(curve);
-  if (count < 2) fail("uniform_params: count=" + std::to_string(count) + " must be >= 2");
+  if (count < 2)
+    fail(ErrorCode::kTooFewPoints, "uniform_params: count=" + std::to_string(count) + " must be >= 2",
+         {{"count", count}});
   std::vector<double> us(count);
   for (int k = 0; k < count; ++k) us[k] = dom.a + (dom.b - dom.a) * k / (count - 1);
   us.back() = dom.b;
@@ -245,10 +261,13 @@ std::array<Vec3, 4> uniform_cubic_coefficients(Vec3 P0, Vec3 P1, Vec3 P2, Vec3 P
 
 Vec3 uniform_cubic_point(const std::vector<Vec3>& P, int i, double t) {
   if (i < 0 || i + 3 >= static_cast<int>(P.size()))
-    fail("uniform_cubic_point: segment i=" + std::to_string(i) + " needs P[i..i+3], but there are " +
-         std::to_string(P.size()) + " points");
+    fail(ErrorCode::kIndexOutOfRange,
+         "uniform_cubic_point: segment i=" + std::to_string(i) + " needs P[i..i+3], but there are " +
+             std::to_string(P.size()) + " points",
+         {{"i", i}, {"points", P.size()}});
   require_finite(t, "uniform_cubic_point", "t");
-  if (t < 0 || t > 1) fail("uniform_cubic_point: t=" + num(t) + " is outside [0, 1]");
+  if (t < 0 || t > 1)
+    fail(ErrorCode::kParameterOutsideDomain, "uniform_cubic_point: t=" + num(t) + " is outside [0, 1]", {{"t", t}});
   // Q(t) = [t^3 t^2 t 1] M [P_i .. P_{i+3}], by Horner on (a, b, c, d).
   const auto [a, b, c, d] = uniform_cubic_coefficients(P[i], P[i + 1], P[i + 2], P[i + 3]);
   return ((a * t + b) * t + c) * t + d;

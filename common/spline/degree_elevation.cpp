@@ -193,10 +193,11 @@ BsplineCurve clamped_copy(const BsplineCurve& curve) {
 
 BsplineCurve degree_elevate(const BsplineCurve& curve, int t) {
   validate(curve);
-  if (t < 0) fail("degree_elevate: t=" + std::to_string(t) + " must be >= 0");
+  if (t < 0) fail(ErrorCode::kOutOfRange, "degree_elevate: t=" + std::to_string(t) + " must be >= 0", {{"t", t}});
   if (curve.p + t > kMaxDegree)
-    fail("degree_elevate: p + t = " + std::to_string(curve.p + t) + " exceeds kMaxDegree=" +
-         std::to_string(kMaxDegree));
+    fail(ErrorCode::kDegreeTooHigh,
+         "degree_elevate: p + t = " + std::to_string(curve.p + t) + " exceeds kMaxDegree=" + std::to_string(kMaxDegree),
+         {{"p", curve.p}, {"t", t}});
   if (t == 0) return curve;
   // A5.9 needs clamped ends and interior multiplicities <= p: clamp first,
   // and elevate the pieces between breaks (multiplicity p + 1) separately.

@@ -40,8 +40,8 @@ const char* error_name(ErrorCode code) {
     case ErrorCode::kTrimCrossing: return "trim_crossing";
     case ErrorCode::kTrimZeroArea: return "trim_zero_area";
     case ErrorCode::kTrimOuterClockwise: return "trim_outer_clockwise";
-    case ErrorCode::kTrimHoleCounterClockwise: return "trim_hole_counter_clockwise";
-    case ErrorCode::kUnclassified: return "unclassified";
+    case ErrorCode::kTrimHoleCounterClockwise:
+      return "trim_hole_counter_clockwise";
   }
   return "unknown";  // a value cast from outside the enumeration
 }

@@ -107,10 +107,7 @@ enum class ErrorCode {
   /// An outer loop runs clockwise. GLU 28 'intersecting or misoriented trim curves'
   kTrimOuterClockwise,
   /// A hole runs counter-clockwise. GLU 28
-  kTrimHoleCounterClockwise,
-  /// Thrown by the code-less fail(message) only.
-  /// TODO(issue 13): remove with fail(message) when bspline/surface/tessellate call sites have codes.
-  kUnclassified,
+  kTrimHoleCounterClockwise,  // the last code (errors_test walks them all up to it)
 };
 
 /// The code in snake case without the k: "knots_decreasing" (stable, for printing and files).
@@ -196,9 +193,6 @@ inline std::vector<ErrorValue> error_values(std::initializer_list<ErrorArg> args
 [[noreturn]] inline void fail(ErrorCode code, const std::string& message, std::initializer_list<ErrorArg> values = {}) {
   throw SplineError(code, message, error_values(values));
 }
-
-// TODO(issue 13): remove when bspline/surface/tessellate call sites have codes.
-[[noreturn]] inline void fail(const std::string& message) { throw SplineError(ErrorCode::kUnclassified, message); }
 
 /// The same error with `prefix` before its message and `context` before its
 /// values, the code kept: "patch 3: " + what(), {patch=3, ...}.

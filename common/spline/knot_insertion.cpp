@@ -127,11 +127,13 @@ std::vector<double> knots_to_bezier(const BsplineCurve& c) {
 void check_insertion(const BsplineCurve& c, double u, int r) {
   validate(c);
   check_param(u, domain(c.p, c.U));
-  if (r < 0) fail("knot_insert: r=" + std::to_string(r) + " must be >= 0");
+  if (r < 0) fail(ErrorCode::kOutOfRange, "knot_insert: r=" + std::to_string(r) + " must be >= 0", {{"r", r}});
   const int s = knot_multiplicity(c.U, u);
   if (s + r > c.p)
-    fail("knot_insert: inserting u=" + num(u) + " " + std::to_string(r) + " time(s) onto multiplicity " +
-         std::to_string(s) + " gives " + std::to_string(s + r) + " > p=" + std::to_string(c.p));
+    fail(ErrorCode::kKnotMultiplicity,
+         "knot_insert: inserting u=" + num(u) + " " + std::to_string(r) + " time(s) onto multiplicity " +
+             std::to_string(s) + " gives " + std::to_string(s + r) + " > p=" + std::to_string(c.p),
+         {{"u", u}, {"r", r}, {"s", s}, {"p", c.p}});
 }
 
 }  // namespace
@@ -179,19 +181,25 @@ BsplineCurve knot_refine(const BsplineCurve& curve, const std::vector<double>& X
   for (std::size_t j = 0; j < X.size(); ++j) {
     if (!std::isfinite(X[j])) require_finite(X[j], "knot_refine", at("X", j));
     if (j > 0 && X[j] < X[j - 1])
-      fail("knot_refine: " + at("X", j) + "=" + num(X[j]) + " < " + at("X", j - 1) + "=" + num(X[j - 1]) +
-           " (must be non-decreasing)");
+      fail(ErrorCode::kKnotsDecreasing,
+           "knot_refine: " + at("X", j) + "=" + num(X[j]) + " < " + at("X", j - 1) + "=" + num(X[j - 1]) +
+               " (must be non-decreasing)",
+           {{"j", j}, {at("X", j), X[j]}, {at("X", j - 1), X[j - 1]}});
     if (X[j] < dom.a || X[j] > dom.b)
-      fail("knot_refine: " + at("X", j) + "=" + num(X[j]) + " is outside the domain [" + num(dom.a) + ", " +
-           num(dom.b) + "]");
+      fail(ErrorCode::kParameterOutsideDomain,
+           "knot_refine: " + at("X", j) + "=" + num(X[j]) + " is outside the domain [" + num(dom.a) + ", " +
+               num(dom.b) + "]",
+           {{at("X", j), X[j]}, {"a", dom.a}, {"b", dom.b}});
   }
   for (std::size_t j = 0; j < X.size();) {
     std::size_t e = j;
     while (e < X.size() && X[e] == X[j]) ++e;
     const int s = knot_multiplicity(curve.U, X[j]);
     if (s + static_cast<int>(e - j) > curve.p)
-      fail("knot_refine: knot " + num(X[j]) + " would get multiplicity " + std::to_string(s + (e - j)) +
-           " > p=" + std::to_string(curve.p));
+      fail(ErrorCode::kKnotMultiplicity,
+           "knot_refine: knot " + num(X[j]) + " would get multiplicity " + std::to_string(s + (e - j)) +
+               " > p=" + std::to_string(curve.p),
+           {{"knot", X[j]}, {"multiplicity", s + (e - j)}, {"p", curve.p}});
     j = e;
   }
   if (X.empty()) return curve;
@@ -226,8 +234,10 @@ std::vector<BsplineCurve> bezier_segments(const BsplineCurve& curve) {
 std::vector<BezierCurve> bezier_decompose(const BsplineCurve& curve) {
   validate(curve);
   if (curve.rational())
-    fail("bezier_decompose: the curve is rational (" + std::to_string(curve.w.size()) +
-         " weights); BezierCurve has no weights, use bezier_segments");
+    fail(ErrorCode::kRationalNotSupported,
+         "bezier_decompose: the curve is rational (" + std::to_string(curve.w.size()) +
+             " weights); BezierCurve has no weights, use bezier_segments",
+         {{"weights", curve.w.size()}});
   std::vector<BezierCurve> out;
   for (BsplineCurve& piece : bezier_segments(curve)) {
     BezierCurve b;
@@ -242,7 +252,7 @@ std::vector<BezierCurve> bezier_decompose(const BsplineCurve& curve) {
 
 BsplineCurve from_bezier_segments(const std::vector<BezierCurve>& segments) {
   const std::string what = "from_bezier_segments";
-  if (segments.empty()) fail(what + ": no segments");
+  if (segments.empty()) fail(ErrorCode::kEmptyInput, what + ": no segments", {{"segments", 0}});
   BsplineCurve out;
   out.p = static_cast<int>(segments.front().P.size()) - 1;
   out.dimension = 2;
@@ -250,18 +260,29 @@ BsplineCurve from_bezier_segments(const std::vector<BezierCurve>& segments) {
     const BezierCurve& s = segments[i];
     const std::string name = what + ": " + at("segment", i);
     const int p = static_cast<int>(s.P.size()) - 1;
-    if (p < 1) fail(name + " has degree " + std::to_string(p) + " (need >= 1)");
-    if (p != out.p) fail(name + " has degree " + std::to_string(p) + ", segment[0] degree " + std::to_string(out.p));
+    if (p < 1)
+      fail(ErrorCode::kDegreeTooLow, name + " has degree " + std::to_string(p) + " (need >= 1)",
+           {{"segment", i}, {"p", p}});
+    if (p != out.p)
+      fail(ErrorCode::kPiecesDoNotJoin,
+           name + " has degree " + std::to_string(p) + ", segment[0] degree " + std::to_string(out.p),
+           {{"segment", i}, {"p", p}, {"p0", out.p}});
     if (!(s.a < s.b) || !std::isfinite(s.a) || !std::isfinite(s.b))
-      fail(name + ": interval [" + num(s.a) + ", " + num(s.b) + "] is not a finite a < b");
+      fail(std::isfinite(s.a) && std::isfinite(s.b) ? ErrorCode::kEmptyDomain : ErrorCode::kNotFinite,
+           name + ": interval [" + num(s.a) + ", " + num(s.b) + "] is not a finite a < b",
+           {{"segment", i}, {"a", s.a}, {"b", s.b}});
     for (std::size_t j = 0; j < s.P.size(); ++j) require_finite(s.P[j], name, at("P", j));
     if (i > 0) {
       const BezierCurve& prev = segments[i - 1];
       if (s.a != prev.b)
-        fail(name + " starts at t=" + num(s.a) + ", segment[" + std::to_string(i - 1) + "] ends at t=" + num(prev.b));
+        fail(ErrorCode::kPiecesDoNotJoin,
+             name + " starts at t=" + num(s.a) + ", segment[" + std::to_string(i - 1) + "] ends at t=" + num(prev.b),
+             {{"segment", i}, {"a", s.a}, {"previous b", prev.b}});
       if (s.P.front() != prev.P.back())
-        fail(name + " starts at " + num(s.P.front()) + ", segment[" + std::to_string(i - 1) + "] ends at " +
-             num(prev.P.back()));
+        fail(ErrorCode::kPiecesDoNotJoin,
+             name + " starts at " + num(s.P.front()) + ", segment[" + std::to_string(i - 1) + "] ends at " +
+                 num(prev.P.back()),
+             {{"segment", i}, {"start", s.P.front()}, {"previous end", prev.P.back()}});
     }
     out.U.insert(out.U.end(), i == 0 ? p + 1 : p, s.a);
     out.P.insert(out.P.end(), s.P.begin() + (i == 0 ? 0 : 1), s.P.end());
@@ -276,7 +297,9 @@ std::pair<BsplineCurve, BsplineCurve> split(const BsplineCurve& curve, double u)
   const ParamInterval dom = domain(curve.p, curve.U);
   require_finite(u, "split", "u");
   if (!(u > dom.a && u < dom.b))
-    fail("split: u=" + num(u) + " must lie strictly inside the domain (" + num(dom.a) + ", " + num(dom.b) + ")");
+    fail(ErrorCode::kParameterOutsideDomain,
+         "split: u=" + num(u) + " must lie strictly inside the domain (" + num(dom.a) + ", " + num(dom.b) + ")",
+         {{"u", u}, {"a", dom.a}, {"b", dom.b}});
   const int p = curve.p;
   const int s = knot_multiplicity(curve.U, u);
   const BsplineCurve c = s >= p ? curve : knot_insert(curve, u, p - s);

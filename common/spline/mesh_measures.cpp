@@ -41,7 +41,8 @@ std::vector<std::array<Vec3, 2>> contour_segments(const Mesh& mesh, Vec3 directi
   const std::string what = "contour_segments";
   require_finite(direction, what, "direction");
   require_finite(level, what, "level");
-  if (norm(direction) == 0) fail(what + ": direction is the zero vector");
+  if (norm(direction) == 0)
+    fail(ErrorCode::kDegenerate, what + ": direction is the zero vector", {{"direction", direction}});
   std::vector<double> h;  // height above the level, per vertex
   for (const Vec3& p : mesh.positions) h.push_back(dot(p, direction) - level);
   const auto below = [&h](int k) { return h[static_cast<std::size_t>(k)] < 0; };
@@ -69,14 +70,18 @@ namespace {
 
 void check_mesh(const Mesh& mesh, const char* what) {
   if (mesh.uv.size() != mesh.positions.size())
-    fail(std::string(what) + ": the mesh has " + std::to_string(mesh.uv.size()) + " (u, v) for " +
-         std::to_string(mesh.positions.size()) + " vertices");
+    fail(ErrorCode::kSizeMismatch,
+         std::string(what) + ": the mesh has " + std::to_string(mesh.uv.size()) + " (u, v) for " +
+             std::to_string(mesh.positions.size()) + " vertices",
+         {{"uv", mesh.uv.size()}, {"positions", mesh.positions.size()}});
   const auto n = static_cast<int>(mesh.positions.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k : mesh.triangles[t])
       if (k < 0 || k >= n)
-        fail(std::string(what) + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(k) +
-             " of " + std::to_string(n));
+        fail(ErrorCode::kIndexOutOfRange,
+             std::string(what) + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(k) + " of " +
+                 std::to_string(n),
+             {{"triangle", t}, {"vertex", k}, {"vertices", n}});
 }
 
 }  // namespace
@@ -110,7 +115,8 @@ MeshFidelity mesh_fidelity(const Mesh& mesh, const SurfaceEvaluator& surface, do
                            double weld_tolerance) {
   check_mesh(mesh, "mesh_fidelity");
   if (!(tilt_degrees >= 0 && tilt_degrees <= 180))
-    fail("mesh_fidelity: tilt_degrees=" + num(tilt_degrees) + " must be in [0, 180]");
+    fail(ErrorCode::kOutOfRange, "mesh_fidelity: tilt_degrees=" + num(tilt_degrees) + " must be in [0, 180]",
+         {{"tilt_degrees", tilt_degrees}});
   const double kDegrees = 180 / std::acos(-1.0);
   MeshFidelity f;
   // Barycentre and edge midpoints, as tessellate.h measures its tolerance.

@@ -135,8 +135,10 @@ void validate(const LagrangeSurface& surface) {
   require_nodes(surface.v_nodes, what, "v_nodes");
   const std::size_t count = surface.u_nodes.size() * surface.v_nodes.size();
   if (surface.c.size() != count)
-    fail(what + ": c.size()=" + std::to_string(surface.c.size()) + " != u_nodes.size()*v_nodes.size() = " +
-         std::to_string(surface.u_nodes.size()) + "*" + std::to_string(surface.v_nodes.size()));
+    fail(ErrorCode::kSizeMismatch,
+         what + ": c.size()=" + std::to_string(surface.c.size()) + " != u_nodes.size()*v_nodes.size() = " +
+             std::to_string(surface.u_nodes.size()) + "*" + std::to_string(surface.v_nodes.size()),
+         {{"c", surface.c.size()}, {"u_nodes", surface.u_nodes.size()}, {"v_nodes", surface.v_nodes.size()}});
   for (std::size_t i = 0; i < count; ++i) require_finite(surface.c[i], what, at("c", i));
 }
 
@@ -219,8 +221,10 @@ void validate(const HermiteLagrangeSurface& surface) {
       {"p0", &surface.p0}, {"p1", &surface.p1}, {"du0", &surface.du0}, {"du1", &surface.du1}};
   for (const auto& [name, list] : lists) {
     if (list->size() != count)
-      fail(what + ": " + name + ".size()=" + std::to_string(list->size()) + " != v_nodes.size()=" +
-           std::to_string(count));
+      fail(ErrorCode::kSizeMismatch,
+           what + ": " + name + ".size()=" + std::to_string(list->size()) +
+               " != v_nodes.size()=" + std::to_string(count),
+           {{name, list->size()}, {"v_nodes", count}});
     for (std::size_t j = 0; j < count; ++j) require_finite((*list)[j], what, at(name, j));
   }
 }
@@ -243,25 +247,33 @@ Vec3 surface_point(const HermiteLagrangeSurface& surface, double u, double v) {
 void validate(const BsplineSurface& surface) {
   const std::string what = "B-spline surface";
   if (surface.nu < 1 || surface.nv < 1)
-    fail(what + ": (nu, nv)=" + ij_text(surface.nu, surface.nv) + " (need at least one control point each way)");
+    fail(ErrorCode::kTooFewPoints,
+         what + ": (nu, nv)=" + ij_text(surface.nu, surface.nv) + " (need at least one control point each way)",
+         {{"nu", surface.nu}, {"nv", surface.nv}});
   validate_knots(surface.p, surface.nu, surface.U, "U knot vector");
   validate_knots(surface.q, surface.nv, surface.V, "V knot vector", "V");
   const std::size_t count = uz(surface.nu) * uz(surface.nv);
   if (surface.P.size() != count)
-    fail(what + ": P.size()=" + std::to_string(surface.P.size()) + " != nu*nv = " + std::to_string(surface.nu) + "*" +
-         std::to_string(surface.nv) + " = " + std::to_string(count));
+    fail(ErrorCode::kSizeMismatch,
+         what + ": P.size()=" + std::to_string(surface.P.size()) + " != nu*nv = " + std::to_string(surface.nu) + "*" +
+             std::to_string(surface.nv) + " = " + std::to_string(count),
+         {{"P", surface.P.size()}, {"nu", surface.nu}, {"nv", surface.nv}});
   for (int i = 0; i < surface.nu; ++i)
     for (int j = 0; j < surface.nv; ++j)
       if (!finite(surface.point(i, j))) require_finite(surface.point(i, j), what, "P" + ij_text(i, j));
   if (surface.w.empty()) return;
   if (surface.w.size() != count)
-    fail(what + ": w.size()=" + std::to_string(surface.w.size()) + " != nu*nv = " + std::to_string(count) +
-         " (one weight per control point, or none)");
+    fail(ErrorCode::kWeightCount,
+         what + ": w.size()=" + std::to_string(surface.w.size()) + " != nu*nv = " + std::to_string(count) +
+             " (one weight per control point, or none)",
+         {{"w", surface.w.size()}, {"nu", surface.nu}, {"nv", surface.nv}});
   for (int i = 0; i < surface.nu; ++i)
     for (int j = 0; j < surface.nv; ++j) {
       const double wij = surface.weight(i, j);
       if (!std::isfinite(wij)) require_finite(wij, what, "weight w" + ij_text(i, j));
-      if (!(wij > 0)) fail(what + ": weight w" + ij_text(i, j) + "=" + num(wij) + " must be > 0");
+      if (!(wij > 0))
+        fail(ErrorCode::kWeightNotPositive, what + ": weight w" + ij_text(i, j) + "=" + num(wij) + " must be > 0",
+             {{"i", i}, {"j", j}, {"w", wij}});
     }
 }
 

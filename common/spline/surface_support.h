@@ -32,8 +32,10 @@ inline double checked_parameter(double x, double lo, double hi, const std::strin
   require_finite(x, what, name);
   const double slack = kBezierParameterSlack * std::max({std::fabs(lo), std::fabs(hi), hi - lo});
   if (x < lo - slack || x > hi + slack)
-    fail(what + ": " + name + "=" + num(x) + " is outside the " + interval_text(name, lo, hi) +
-         (x < lo ? " (below)" : " (above)"));
+    fail(ErrorCode::kParameterOutsideDomain,
+         what + ": " + name + "=" + num(x) + " is outside the " + interval_text(name, lo, hi) +
+             (x < lo ? " (below)" : " (above)"),
+         {{name, x}, {"a", lo}, {"b", hi}});
   return std::clamp(x, lo, hi);
 }
 
@@ -42,22 +44,29 @@ inline double checked_parameter(double x, double lo, double hi, const std::strin
 inline void require_in(double x, ParamInterval dom, const std::string& what, const char* name) {
   require_finite(x, what, name);
   if (x < dom.a || x > dom.b)
-    fail(what + ": " + name + "=" + num(x) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) + "]");
+    fail(ErrorCode::kParameterOutsideDomain,
+         what + ": " + name + "=" + num(x) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) + "]",
+         {{name, x}, {"a", dom.a}, {"b", dom.b}});
 }
 
 inline void require_nodes(const std::vector<double>& nodes, const std::string& what, const char* name) {
-  if (nodes.empty()) fail(what + ": " + name + " is empty (need at least one node)");
+  if (nodes.empty())
+    fail(ErrorCode::kEmptyInput, what + ": " + name + " is empty (need at least one node)", {{name, 0}});
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     require_finite(nodes[i], what, at(name, i));
     for (std::size_t k = 0; k < i; ++k)
       if (nodes[k] == nodes[i])
-        fail(what + ": " + at(name, k) + "=" + num(nodes[k]) + " and " + at(name, i) + "=" + num(nodes[i]) +
-             " coincide (nodes must be pairwise distinct)");
+        fail(ErrorCode::kNodesCoincide,
+             what + ": " + at(name, k) + "=" + num(nodes[k]) + " and " + at(name, i) + "=" + num(nodes[i]) +
+                 " coincide (nodes must be pairwise distinct)",
+             {{at(name, k), nodes[k]}, {at(name, i), nodes[i]}});
   }
 }
 
 inline void require_order(int d, const std::string& what) {
-  if (d < 0) fail(what + ": derivative order d=" + std::to_string(d) + " is negative");
+  if (d < 0)
+    fail(ErrorCode::kNegativeDerivativeOrder, what + ": derivative order d=" + std::to_string(d) + " is negative",
+         {{"d", d}});
 }
 
 // ---- unit normal with fallback (shared by every surface type) ----------------

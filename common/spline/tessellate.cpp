@@ -70,19 +70,28 @@ Mesh PatchTessellator::run(const std::vector<TrimLoop>& trims) {
 
 void PatchTessellator::check_input() const {
   const std::string what = "tessellate_surface";
-  if (!surface_) fail(what + ": no surface evaluator given");
+  if (!surface_) fail(ErrorCode::kEmptyInput, what + ": no surface evaluator given");
   if (!std::isfinite(dom_.u0) || !std::isfinite(dom_.u1) || !std::isfinite(dom_.v0) || !std::isfinite(dom_.v1) ||
       !(dom_.u0 < dom_.u1) || !(dom_.v0 < dom_.v1))
-    fail(what + ": domain " + to_string(dom_) + " is empty or not finite");
+    fail(std::isfinite(dom_.u0) && std::isfinite(dom_.u1) && std::isfinite(dom_.v0) && std::isfinite(dom_.v1)
+             ? ErrorCode::kEmptyDomain
+             : ErrorCode::kNotFinite,
+         what + ": domain " + to_string(dom_) + " is empty or not finite",
+         {{"u0", dom_.u0}, {"u1", dom_.u1}, {"v0", dom_.v0}, {"v1", dom_.v1}});
   if (adaptive_) {
     if (!(opt_.tolerance > 0) || !std::isfinite(opt_.tolerance))
-      fail(what + ": tolerance=" + num(opt_.tolerance) + " must be > 0");
+      fail(ErrorCode::kToleranceNotPositive, what + ": tolerance=" + num(opt_.tolerance) + " must be > 0",
+           {{"tolerance", opt_.tolerance}});
     if (opt_.min_depth < 0 || opt_.min_depth > opt_.max_depth || opt_.max_depth > kMaxQuadtreeDepthLimit)
-      fail(what + ": need 0 <= min_depth=" + std::to_string(opt_.min_depth) + " <= max_depth=" +
-           std::to_string(opt_.max_depth) + " <= " + std::to_string(kMaxQuadtreeDepthLimit));
+      fail(ErrorCode::kOutOfRange,
+           what + ": need 0 <= min_depth=" + std::to_string(opt_.min_depth) +
+               " <= max_depth=" + std::to_string(opt_.max_depth) + " <= " + std::to_string(kMaxQuadtreeDepthLimit),
+           {{"min_depth", opt_.min_depth}, {"max_depth", opt_.max_depth}});
   } else if (opt_.u_steps < 1 || opt_.v_steps < 1 || opt_.u_steps > (1 << 20) || opt_.v_steps > (1 << 20)) {
-    fail(what + ": u_steps=" + std::to_string(opt_.u_steps) + ", v_steps=" + std::to_string(opt_.v_steps) +
-         " (each must be 1..1048576)");
+    fail(ErrorCode::kOutOfRange,
+         what + ": u_steps=" + std::to_string(opt_.u_steps) + ", v_steps=" + std::to_string(opt_.v_steps) +
+             " (each must be 1..1048576)",
+         {{"u_steps", opt_.u_steps}, {"v_steps", opt_.v_steps}});
   }
 }
 

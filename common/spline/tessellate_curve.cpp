@@ -40,15 +40,18 @@ double chord_error(Vec3 q, Vec3 p0, Vec3 p1, double f, ChordError kind) {
 std::vector<CurveSample> flatten_curve(const std::function<Vec3(double)>& curve, double a, double b,
                                        const FlattenOptions& options) {
   const std::string what = "flatten_curve";
-  if (!curve) fail(what + ": no curve given");
+  if (!curve) fail(ErrorCode::kEmptyInput, what + ": no curve given");
   require_finite(a, what, "a");
   require_finite(b, what, "b");
-  if (a > b) fail(what + ": a=" + num(a) + " > b=" + num(b));
+  if (a > b) fail(ErrorCode::kEmptyDomain, what + ": a=" + num(a) + " > b=" + num(b), {{"a", a}, {"b", b}});
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-    fail(what + ": tolerance=" + num(options.tolerance) + " must be > 0");
+    fail(ErrorCode::kToleranceNotPositive, what + ": tolerance=" + num(options.tolerance) + " must be > 0",
+         {{"tolerance", options.tolerance}});
   if (options.min_depth < 0 || options.min_depth > options.max_depth || options.max_depth > 30)
-    fail(what + ": need 0 <= min_depth=" + std::to_string(options.min_depth) +
-         " <= max_depth=" + std::to_string(options.max_depth) + " <= 30");
+    fail(ErrorCode::kOutOfRange,
+         what + ": need 0 <= min_depth=" + std::to_string(options.min_depth) +
+             " <= max_depth=" + std::to_string(options.max_depth) + " <= 30",
+         {{"min_depth", options.min_depth}, {"max_depth", options.max_depth}});
 
   const auto evaluate = [&](double t) {
     const Vec3 p = curve(t);

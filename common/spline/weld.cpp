@@ -23,7 +23,8 @@ namespace gllab::spline {
 
 Mesh weld(const std::vector<Mesh>& meshes, double weld_tolerance) {
   if (!(weld_tolerance >= 0) || !std::isfinite(weld_tolerance))
-    fail("weld: weld_tolerance=" + num(weld_tolerance) + " must be >= 0");
+    fail(std::isfinite(weld_tolerance) ? ErrorCode::kToleranceNotPositive : ErrorCode::kNotFinite,
+         "weld: weld_tolerance=" + num(weld_tolerance) + " must be >= 0", {{"weld_tolerance", weld_tolerance}});
   Mesh out;
   // A hash grid of cell size weld_tolerance: a vertex can only merge with one
   // in its own or a neighbouring cell.
@@ -75,8 +76,10 @@ Mesh tessellate_patches(const std::vector<Patch>& patches, const TessellationOpt
   for (std::size_t k = 0; k < patches.size(); ++k) {
     try {
       meshes.push_back(tessellate_surface(patches[k].surface, patches[k].domain, options, patches[k].trims));
-    } catch (const std::invalid_argument& e) {
-      fail("patch " + std::to_string(k) + ": " + e.what());
+    } catch (const SplineError& e) {  // the patch's error, its code kept, with the patch named
+      throw with_context(e, "patch " + std::to_string(k) + ": ", {{"patch", k}});
+    } catch (const std::invalid_argument& e) {  // thrown by a caller's evaluator: no code to keep
+      throw std::invalid_argument("patch " + std::to_string(k) + ": " + e.what());
     }
   }
   return weld(meshes, weld_tolerance);

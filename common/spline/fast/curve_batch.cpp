@@ -59,12 +59,16 @@ void check_sorted_params_detailed(const std::vector<double>& us, ParamInterval d
   for (std::size_t k = 0; k < us.size(); ++k) {
     if (!std::isfinite(us[k])) require_finite(us[k], "curve_points", at("u", k));
     if (k > 0 && us[k] < us[k - 1])
-      fail("curve_points: " + at("u", k) + "=" + num(us[k]) + " < " + at("u", k - 1) + "=" + num(us[k - 1]) +
-           " (parameters must be non-decreasing)");
+      fail(ErrorCode::kParametersNotSorted,
+           "curve_points: " + at("u", k) + "=" + num(us[k]) + " < " + at("u", k - 1) + "=" + num(us[k - 1]) +
+               " (parameters must be non-decreasing)",
+           {{"k", k}, {at("u", k), us[k]}, {at("u", k - 1), us[k - 1]}});
   }
   if (!us.empty() && (us.front() < dom.a || us.back() > dom.b)) {
     const double bad = us.front() < dom.a ? us.front() : us.back();
-    fail("curve_points: u=" + num(bad) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) + "]");
+    fail(ErrorCode::kParameterOutsideDomain,
+         "curve_points: u=" + num(bad) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) + "]",
+         {{"u", bad}, {"a", dom.a}, {"b", dom.b}});
   }
 }
 
@@ -86,7 +90,7 @@ void check_sorted_params(const std::vector<double>& us, ParamInterval dom) {
   if (us.empty()) return;
   if (count_unsorted(us.data(), us.size()) == 0 && us.front() >= dom.a && us.back() <= dom.b) return;
   check_sorted_params_detailed(us, dom);
-  fail("curve_points: invalid parameters");  // not reached: the detailed check throws
+  fail(ErrorCode::kParametersNotSorted, "curve_points: invalid parameters");  // not reached: the detailed check throws
 }
 
 /// What the kernels need to know about one knot span i, computed once per

@@ -74,8 +74,9 @@ BasisTable basis_table(int num_points, int degree, const std::vector<double>& kn
   for (std::size_t k = 0; k < params.size(); ++k) {
     const double x = params[k];
     if (!(x >= dom.a && x <= dom.b))
-      fail(what + ": " + at(name, k) + "=" + num(x) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) +
-           "]");
+      fail(std::isnan(x) ? ErrorCode::kNotFinite : ErrorCode::kParameterOutsideDomain,
+           what + ": " + at(name, k) + "=" + num(x) + " is outside the domain [" + num(dom.a) + ", " + num(dom.b) + "]",
+           {{at(name, k), x}, {"a", dom.a}, {"b", dom.b}});
   }
   const bool sorted = std::is_sorted(params.begin(), params.end());
   runs = span_runs(num_points - 1, degree, knots, params.data(), params.size(), sorted);
