@@ -41,6 +41,19 @@ void check_degree_and_knots(const char* fn, int n, int p, const std::vector<doub
          {{"knots", U.size()}, {"needed", n + p + 2}});
 }
 
+/// The checks of a single N_{i,p}(u) (one_basis_fun, cox_de_boor): p >= 0,
+/// 0 <= i <= m - p - 1, u finite.
+void check_one_basis_fun(const char* fn, int i, double u, int p, int m) {
+  if (p < 0)
+    fail(ErrorCode::kDegreeTooLow, std::string(fn) + ": degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
+  if (i < 0 || i > m - p - 1)
+    fail(ErrorCode::kIndexOutOfRange,
+         std::string(fn) + ": index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
+             std::to_string(m - p - 1) + "]",
+         {{"i", i}, {"p", p}, {"m", m}});
+  require_finite(u, fn, "u");
+}
+
 /// U[i] <= u < U[i+1] by binary search, for U[p] <= u < U[n+1] (A2.1's loop).
 int span_right(int n, int p, double u, const std::vector<double>& U) {
   int low = p;
@@ -225,14 +238,7 @@ std::vector<std::vector<double>> ders_basis_funs(int i, double u, int p, int d, 
 
 double one_basis_fun(int i, double u, int p, const std::vector<double>& U) {
   const int m = size_of(U) - 1;
-  if (p < 0)
-    fail(ErrorCode::kDegreeTooLow, "one_basis_fun: degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
-  if (i < 0 || i > m - p - 1)
-    fail(ErrorCode::kIndexOutOfRange,
-         "one_basis_fun: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
-             std::to_string(m - p - 1) + "]",
-         {{"i", i}, {"p", p}, {"m", m}});
-  require_finite(u, "one_basis_fun", "u");
+  check_one_basis_fun("one_basis_fun", i, u, p, m);
   // The book special-cases u == U[0] and u == U[m]; the active interval rule
   // (find_span's, extended to [U[0], U[m]]) covers both.
   const int s = active_interval(u, p, U);
@@ -271,13 +277,7 @@ double cox_de_boor_rec(int i, int k, double u, const std::vector<double>& U, int
 
 double cox_de_boor(int i, double u, int p, const std::vector<double>& U) {
   const int m = size_of(U) - 1;
-  if (p < 0) fail(ErrorCode::kDegreeTooLow, "cox_de_boor: degree p=" + std::to_string(p) + " must be >= 0", {{"p", p}});
-  if (i < 0 || i > m - p - 1)
-    fail(ErrorCode::kIndexOutOfRange,
-         "cox_de_boor: index i=" + std::to_string(i) + " out of range [0, m - p - 1] = [0, " +
-             std::to_string(m - p - 1) + "]",
-         {{"i", i}, {"p", p}, {"m", m}});
-  require_finite(u, "cox_de_boor", "u");
+  check_one_basis_fun("cox_de_boor", i, u, p, m);
   return cox_de_boor_rec(i, p, u, U, active_interval(u, p, U));
 }
 

@@ -16,18 +16,7 @@
 
 namespace gllab::spline {
 
-using internal::binomial;
-using internal::checked_parameter;
-using internal::degenerate;
-using internal::finite;
-using internal::ij_text;
-using internal::interval_text;
-using internal::require_in;
-using internal::require_nodes;
-using internal::require_order;
-using internal::Table;
-using internal::unit_normal;
-using internal::uz;
+using namespace internal;  // surface_support.h: the checks and helpers both surface files use
 
 namespace {
 
@@ -60,23 +49,17 @@ void validate_as(const BezierSurface& s, const std::string& what) {
       if (!finite(s.point(i, j))) require_finite(s.point(i, j), what, "P" + ij_text(i, j));
 }
 
-/// Row i of the net (j = 0..m) as a curve along v on [c, d].
-BezierCurve row_curve(const BezierSurface& s, int i) {
+/// Row k of the net (P[k][0..m]) as a curve along v on [c, d], or column k
+/// (P[0..n][k]) as a curve along u on [a, b].
+BezierCurve net_curve(const BezierSurface& s, int k, bool row) {
   BezierCurve curve;
-  curve.a = s.c;
-  curve.b = s.d;
-  for (int j = 0; j <= s.m; ++j) curve.P.push_back(s.point(i, j));
+  curve.a = row ? s.c : s.a;
+  curve.b = row ? s.d : s.b;
+  for (int l = 0; l <= (row ? s.m : s.n); ++l) curve.P.push_back(row ? s.point(k, l) : s.point(l, k));
   return curve;
 }
-
-/// Column j of the net (i = 0..n) as a curve along u on [a, b].
-BezierCurve column_curve(const BezierSurface& s, int j) {
-  BezierCurve curve;
-  curve.a = s.a;
-  curve.b = s.b;
-  for (int i = 0; i <= s.n; ++i) curve.P.push_back(s.point(i, j));
-  return curve;
-}
+BezierCurve row_curve(const BezierSurface& s, int i) { return net_curve(s, i, true); }
+BezierCurve column_curve(const BezierSurface& s, int j) { return net_curve(s, j, false); }
 
 /// One de Casteljau step along the rows (u): rows - 1 rows.
 ControlNet step_u(const ControlNet& net, double s) {
@@ -244,27 +227,24 @@ BezierSurface derivative_surface(const BezierSurface& surface, int k, int l) {
   return out;
 }
 
-BezierCurve iso_curve_u(const BezierSurface& surface, double u0) {
-  const std::string what = "iso_curve_u (Bezier)";
-  validate_as(surface, what);
-  const double uc = checked_parameter(u0, surface.a, surface.b, what, "u0");
+namespace {
+/// An iso-curve of a Bézier surface is a Bézier curve: its control points are
+/// the points of the columns (u fixed) or the rows (v fixed) at the parameter.
+BezierCurve bezier_iso_curve(const BezierSurface& s, double t, bool u_fixed) {
+  const std::string what = u_fixed ? "iso_curve_u (Bezier)" : "iso_curve_v (Bezier)";
+  validate_as(s, what);
+  const double tc = u_fixed ? checked_parameter(t, s.a, s.b, what, "u0") : checked_parameter(t, s.c, s.d, what, "v0");
   BezierCurve curve;
-  curve.a = surface.c;
-  curve.b = surface.d;
-  for (int j = 0; j <= surface.m; ++j) curve.P.push_back(bezier_point(column_curve(surface, j), uc));
+  curve.a = u_fixed ? s.c : s.a;
+  curve.b = u_fixed ? s.d : s.b;
+  for (int k = 0; k <= (u_fixed ? s.m : s.n); ++k)
+    curve.P.push_back(bezier_point(u_fixed ? column_curve(s, k) : row_curve(s, k), tc));
   return curve;
 }
+}  // namespace
 
-BezierCurve iso_curve_v(const BezierSurface& surface, double v0) {
-  const std::string what = "iso_curve_v (Bezier)";
-  validate_as(surface, what);
-  const double vc = checked_parameter(v0, surface.c, surface.d, what, "v0");
-  BezierCurve curve;
-  curve.a = surface.a;
-  curve.b = surface.b;
-  for (int i = 0; i <= surface.n; ++i) curve.P.push_back(bezier_point(row_curve(surface, i), vc));
-  return curve;
-}
+BezierCurve iso_curve_u(const BezierSurface& surface, double u0) { return bezier_iso_curve(surface, u0, true); }
+BezierCurve iso_curve_v(const BezierSurface& surface, double v0) { return bezier_iso_curve(surface, v0, false); }
 
 BsplineSurface to_bspline(const BezierSurface& surface) {
   const std::string what = "to_bspline (Bezier surface)";

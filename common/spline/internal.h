@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -29,6 +30,20 @@ inline bool finite(Vec3 q) { return std::isfinite(q.x) && std::isfinite(q.y) && 
 inline void check_param(double u, ParamInterval dom) {
   require_finite(u, "parameter", "u");
   require_in_domain(u, dom);
+}
+
+/// x[0..] finite and non-decreasing, else `code` naming the first pair out of
+/// order: "what: X[3]=0.2 < X[2]=0.5 (rule)", {k=3, X[3]=0.2, X[2]=0.5}.
+inline void require_nondecreasing(const std::vector<double>& x, const std::string& what, const char* name,
+                                  ErrorCode code, const char* rule) {
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (!std::isfinite(x[k])) require_finite(x[k], what, at(name, k));
+    if (k > 0 && x[k] < x[k - 1])
+      fail(code,
+           what + ": " + at(name, k) + "=" + num(x[k]) + " < " + at(name, k - 1) + "=" + num(x[k - 1]) + " (" + rule +
+               ")",
+           {{"k", k}, {at(name, k), x[k]}, {at(name, k - 1), x[k - 1]}});
+  }
 }
 
 /// The index k of the last knot <= u (so U[k] <= u < U[k+1] when u < U[m]).

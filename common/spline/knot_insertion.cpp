@@ -178,13 +178,8 @@ BsplineCurve knot_insert(const BsplineCurve& curve, double u, int r) {
 BsplineCurve knot_refine(const BsplineCurve& curve, const std::vector<double>& X) {
   validate(curve);
   const ParamInterval dom = domain(curve.p, curve.U);
+  internal::require_nondecreasing(X, "knot_refine", "X", ErrorCode::kKnotsDecreasing, "must be non-decreasing");
   for (std::size_t j = 0; j < X.size(); ++j) {
-    if (!std::isfinite(X[j])) require_finite(X[j], "knot_refine", at("X", j));
-    if (j > 0 && X[j] < X[j - 1])
-      fail(ErrorCode::kKnotsDecreasing,
-           "knot_refine: " + at("X", j) + "=" + num(X[j]) + " < " + at("X", j - 1) + "=" + num(X[j - 1]) +
-               " (must be non-decreasing)",
-           {{"j", j}, {at("X", j), X[j]}, {at("X", j - 1), X[j - 1]}});
     if (X[j] < dom.a || X[j] > dom.b)
       fail(ErrorCode::kParameterOutsideDomain,
            "knot_refine: " + at("X", j) + "=" + num(X[j]) + " is outside the domain [" + num(dom.a) + ", " +

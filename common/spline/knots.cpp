@@ -13,6 +13,14 @@ namespace gllab::spline {
 
 namespace {
 int size_of(const std::vector<double>& U) { return static_cast<int>(U.size()); }
+
+/// The knot-vector makers' check: 1 <= p <= n.
+void check_degree_fits(const char* fn, int n, int p) {
+  if (p < 1 || p > n)
+    fail(ErrorCode::kOutOfRange,
+         std::string(fn) + ": needs 1 <= p <= n, got p=" + std::to_string(p) + ", n=" + std::to_string(n),
+         {{"p", p}, {"n", n}});
+}
 }  // namespace
 
 // ---- checks -----------------------------------------------------------------
@@ -79,10 +87,7 @@ int knot_multiplicity(const std::vector<double>& U, double u) {
 // ---- knot vectors -----------------------------------------------------------
 
 std::vector<double> clamped_uniform_knots(int n, int p) {
-  if (p < 1 || p > n)
-    fail(ErrorCode::kOutOfRange,
-         "clamped_uniform_knots: needs 1 <= p <= n, got p=" + std::to_string(p) + ", n=" + std::to_string(n),
-         {{"p", p}, {"n", n}});
+  check_degree_fits("clamped_uniform_knots", n, p);
   std::vector<double> U(n + p + 2);
   const int segments = n - p + 1;
   for (int i = 0; i <= p; ++i) {
@@ -94,10 +99,7 @@ std::vector<double> clamped_uniform_knots(int n, int p) {
 }
 
 std::vector<double> uniform_knots(int n, int p) {
-  if (p < 1 || p > n)
-    fail(ErrorCode::kOutOfRange,
-         "uniform_knots: needs 1 <= p <= n, got p=" + std::to_string(p) + ", n=" + std::to_string(n),
-         {{"p", p}, {"n", n}});
+  check_degree_fits("uniform_knots", n, p);
   std::vector<double> U(n + p + 2);
   for (int i = 0; i < n + p + 2; ++i) U[i] = i;
   return U;

@@ -21,18 +21,7 @@
 
 namespace gllab::spline {
 
-using internal::binomial;
-using internal::checked_parameter;
-using internal::degenerate;
-using internal::finite;
-using internal::ij_text;
-using internal::interval_text;
-using internal::require_in;
-using internal::require_nodes;
-using internal::require_order;
-using internal::Table;
-using internal::unit_normal;
-using internal::uz;
+using namespace internal;  // surface_support.h: the checks and helpers both surface files use
 
 namespace {
 

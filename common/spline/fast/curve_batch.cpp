@@ -11,6 +11,7 @@
 #include "spline/bspline.h"
 #include "spline/errors.h"
 #include "spline/fast/kernels.h"
+#include "spline/internal.h"
 
 namespace gllab::spline {
 
@@ -56,14 +57,8 @@ namespace {
 /// Checks the parameters of a batch: finite, non-decreasing, in the domain,
 /// and throws naming the first bad one.
 void check_sorted_params_detailed(const std::vector<double>& us, ParamInterval dom) {
-  for (std::size_t k = 0; k < us.size(); ++k) {
-    if (!std::isfinite(us[k])) require_finite(us[k], "curve_points", at("u", k));
-    if (k > 0 && us[k] < us[k - 1])
-      fail(ErrorCode::kParametersNotSorted,
-           "curve_points: " + at("u", k) + "=" + num(us[k]) + " < " + at("u", k - 1) + "=" + num(us[k - 1]) +
-               " (parameters must be non-decreasing)",
-           {{"k", k}, {at("u", k), us[k]}, {at("u", k - 1), us[k - 1]}});
-  }
+  internal::require_nondecreasing(us, "curve_points", "u", ErrorCode::kParametersNotSorted,
+                                  "parameters must be non-decreasing");
   if (!us.empty() && (us.front() < dom.a || us.back() > dom.b)) {
     const double bad = us.front() < dom.a ? us.front() : us.back();
     fail(ErrorCode::kParameterOutsideDomain,
@@ -221,17 +216,13 @@ template <class Pt, bool kDerivs>
 // function would run that function's baseline code).
 GLLAB_SPLINE_CLONES void eval_polynomial(const BsplineCurve& c, const SpanRun* runs, std::size_t run_count,
                                          const double* u, Vec3* out, Vec3* der) {
-  if (der)
-    eval_runs<Vec3, true>(c, runs, run_count, u, out, der);
-  else
-    eval_runs<Vec3, false>(c, runs, run_count, u, out, nullptr);
+  der ? eval_runs<Vec3, true>(c, runs, run_count, u, out, der)
+      : eval_runs<Vec3, false>(c, runs, run_count, u, out, der);
 }
 GLLAB_SPLINE_CLONES void eval_rational(const BsplineCurve& c, const SpanRun* runs, std::size_t run_count,
                                        const double* u, Vec3* out, Vec3* der) {
-  if (der)
-    eval_runs<Vec4, true>(c, runs, run_count, u, out, der);
-  else
-    eval_runs<Vec4, false>(c, runs, run_count, u, out, nullptr);
+  der ? eval_runs<Vec4, true>(c, runs, run_count, u, out, der)
+      : eval_runs<Vec4, false>(c, runs, run_count, u, out, der);
 }
 
 void curve_points_impl(const BsplineCurve& curve, const std::vector<double>& sorted_u, std::vector<Vec3>& out,
