@@ -678,7 +678,7 @@ class GluErrorPathLeakExemption {
   GluErrorPathLeakExemption& operator=(const GluErrorPathLeakExemption&) = delete;
 
  private:
-  bool active_ = false;
+  [[maybe_unused]] bool active_ = false;  // read only in a sanitizer build
 };
 
 }  // namespace

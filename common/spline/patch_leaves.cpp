@@ -261,10 +261,13 @@ void PatchTessellator::triangulate_leaves() {
         st.leaves.push_back(l);
         in_strip[l] = 1;
       }
-    for (auto& [key, st] : strips)
-      std::sort(st.leaves.begin(), st.leaves.end(), [&](int a, int b) {
-        return along(leaves_[a], st.side).first < along(leaves_[b], st.side).first;
+    for (auto& entry : strips) {
+      // Named, not a structured binding: C++17 lambdas cannot capture those (clang rejects it).
+      const int side = entry.second.side;
+      std::sort(entry.second.leaves.begin(), entry.second.leaves.end(), [&](int a, int b) {
+        return along(leaves_[a], side).first < along(leaves_[b], side).first;
       });
+    }
   }
   std::map<int, std::vector<int>> members;
   std::map<int, std::vector<const Strip*>> strips_of;
