@@ -63,13 +63,33 @@ bool matched_nearby(const Image& a, const Image& b, int x, int y, int radius, in
   return false;
 }
 
+// The largest channel difference between the pixel (x, y) of `img` and its 8 neighbours.
+int local_contrast(const Image& img, int x, int y) {
+  const std::uint8_t* centre = img.pixel(x, y);
+  int largest = 0;
+  for (int yy = std::max(0, y - 1); yy <= std::min(img.height - 1, y + 1); ++yy)
+    for (int xx = std::max(0, x - 1); xx <= std::min(img.width - 1, x + 1); ++xx)
+      largest = std::max(largest, max_channel_delta(centre, img.pixel(xx, yy)));
+  return largest;
+}
+
 // A differing pixel is excused when the difference is explained by a shift
 // both ways: the test's colour appears near (x, y) in the reference, and the
-// reference's colour appears near (x, y) in the test.
+// reference's colour appears near (x, y) in the test; and, with an
+// edge_contrast, when the pixel lies on a thin feature in either image.
 bool shift_explains(const Image& reference, const Image& test, int x, int y, int radius,
-                    int threshold) {
-  return radius > 0 && matched_nearby(test, reference, x, y, radius, threshold) &&
-         matched_nearby(reference, test, x, y, radius, threshold);
+                    int threshold, int edge_contrast) {
+  if (radius == 0 || !matched_nearby(test, reference, x, y, radius, threshold) ||
+      !matched_nearby(reference, test, x, y, radius, threshold))
+    return false;
+  return edge_contrast == 0 || local_contrast(reference, x, y) >= edge_contrast ||
+         local_contrast(test, x, y) >= edge_contrast;
+}
+
+void check_edge(int edge_contrast, const char* who) {
+  if (edge_contrast < 0 || edge_contrast > kMaxThreshold)
+    throw std::invalid_argument(std::string(who) + ": edge_contrast " + std::to_string(edge_contrast) +
+                                " is outside 0..255");
 }
 
 }  // namespace
@@ -82,28 +102,47 @@ double Comparison::differing_share() const {
   return total_pixels == 0 ? 0.0 : double(differing_pixels) / double(total_pixels);
 }
 
+double Comparison::shifted_share() const {
+  return total_pixels == 0 ? 0.0 : double(shifted_pixels()) / double(total_pixels);
+}
+
 bool Comparison::passes(const Tolerance& t) const {
+  score(t);  // checks that t is the tolerance the counts were made with
+  return mismatched_share() <= t.max_differing_share && shifted_share() <= t.max_shifted_share;
+}
+
+double Comparison::score(const Tolerance& t) const {
+  const auto mismatch = [](const char* what, int asked, int used) {
+    return std::invalid_argument("Comparison::score: tolerance " + std::string(what) + " " +
+                                 std::to_string(asked) + " != the " + what +
+                                 " the comparison used (" + std::to_string(used) + ")");
+  };
   if (t.channel_threshold != channel_threshold)
-    throw std::invalid_argument("Comparison::passes: tolerance channel_threshold " +
-                                std::to_string(t.channel_threshold) +
-                                " != the threshold the comparison used (" +
-                                std::to_string(channel_threshold) + ")");
-  if (t.shift_radius != shift_radius)
-    throw std::invalid_argument("Comparison::passes: tolerance shift_radius " +
-                                std::to_string(t.shift_radius) +
-                                " != the radius the comparison used (" +
-                                std::to_string(shift_radius) + ")");
-  return mismatched_share() <= t.max_differing_share;
+    throw mismatch("channel_threshold", t.channel_threshold, channel_threshold);
+  if (t.shift_radius != shift_radius) throw mismatch("shift_radius", t.shift_radius, shift_radius);
+  if (t.edge_contrast != edge_contrast) throw mismatch("edge_contrast", t.edge_contrast, edge_contrast);
+  const auto ratio = [](double share, double limit) {
+    if (share == 0.0) return 0.0;
+    return limit > 0.0 ? share / limit : std::numeric_limits<double>::infinity();
+  };
+  return std::max(ratio(mismatched_share(), t.max_differing_share),
+                  ratio(shifted_share(), t.max_shifted_share));
+}
+
+Comparison compare_images(const Image& reference, const Image& test, const Tolerance& t) {
+  return compare_images(reference, test, t.channel_threshold, t.shift_radius, t.edge_contrast);
 }
 
 Comparison compare_images(const Image& reference, const Image& test, int channel_threshold,
-                          int shift_radius) {
+                          int shift_radius, int edge_contrast) {
   check_inputs(reference, test, channel_threshold, "compare");
   check_radius(shift_radius, "compare");
+  check_edge(edge_contrast, "compare");
 
   Comparison result;
   result.channel_threshold = channel_threshold;
   result.shift_radius = shift_radius;
+  result.edge_contrast = edge_contrast;
   result.total_pixels = static_cast<long long>(reference.width) * reference.height;
 
   // Sums over every channel of every pixel. Integers, so the result does not
@@ -125,7 +164,7 @@ Comparison compare_images(const Image& reference, const Image& test, int channel
       ++result.differing_pixels;
       const auto pixel = static_cast<int>(i / kChannels);
       if (!shift_explains(reference, test, pixel % reference.width, pixel / reference.width,
-                          shift_radius, channel_threshold))
+                          shift_radius, channel_threshold, edge_contrast))
         ++result.mismatched_pixels;
     }
   }
@@ -140,9 +179,10 @@ Comparison compare_images(const Image& reference, const Image& test, int channel
 }
 
 Image heat_map(const Image& reference, const Image& test, int channel_threshold,
-               int shift_radius) {
+               int shift_radius, int edge_contrast) {
   check_inputs(reference, test, channel_threshold, "heat_map");
   check_radius(shift_radius, "heat_map");
+  check_edge(edge_contrast, "heat_map");
 
   Image map(reference.width, reference.height);
   // The ramp runs over deltas threshold+1 (yellow) .. 255 (red).
@@ -159,7 +199,8 @@ Image heat_map(const Image& reference, const Image& test, int channel_threshold,
         const int luma = (77 * r[0] + 150 * r[1] + 29 * r[2] + 128) >> 8;
         const auto grey = static_cast<std::uint8_t>(luma / 4);
         out[0] = out[1] = out[2] = grey;
-      } else if (shift_explains(reference, test, x, y, shift_radius, channel_threshold)) {
+      } else if (shift_explains(reference, test, x, y, shift_radius, channel_threshold,
+                                edge_contrast)) {
         out[0] = 0;  // tolerated: a shift of at most shift_radius explains it
         out[1] = 96;
         out[2] = 255;

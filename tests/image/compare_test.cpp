@@ -303,4 +303,64 @@ TEST(ShiftTolerance, HeatMapShowsExcusedPixelsBlueAndMismatchedHot) {
   EXPECT_EQ(hot.pixel(3, 0)[2], 0);
 }
 
+// --- edge contrast: a shift excuses only a thin feature ------------------------
+
+// A horizontal ramp, 9x9: column x has grey level base + step * x.
+Image ramp(int base, int step) {
+  Image img = filled(9, 9, 0, 0, 0, 255);
+  for (int y = 0; y < 9; ++y)
+    for (int x = 0; x < 9; ++x) {
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = p[1] = p[2] = static_cast<std::uint8_t>(base + step * x);
+    }
+  return img;
+}
+
+TEST(EdgeContrast, ALineMovedOnePixelIsStillExcused) {
+  // Columns 4 and 5 differ by 255 from their neighbours (white on black):
+  // both are on a thin feature, so the 18 differing pixels stay excused.
+  const Comparison c = gllab::compare_images(vertical_line(4), vertical_line(5), 0, 1, 48);
+  EXPECT_EQ(c.differing_pixels, 18);
+  EXPECT_EQ(c.mismatched_pixels, 0);
+  EXPECT_EQ(c.shifted_pixels(), 18);
+}
+
+TEST(EdgeContrast, ASmoothSurfaceWhoseShadeChangedIsNotExcused) {
+  // A ramp of 10 per column, brightened by 10: each test shade appears one
+  // column over in the reference, so a bare shift excuses every pixel, but
+  // neighbours differ by only 10 < 48: no thin feature, all 81 count.
+  const Image reference = ramp(40, 10), test = ramp(50, 10);
+  const Comparison anywhere = gllab::compare_images(reference, test, 2, 1);
+  EXPECT_EQ(anywhere.differing_pixels, 81);
+  // Columns 0 and 8 (2 x 9 pixels): their shade has no neighbour to borrow from.
+  EXPECT_EQ(anywhere.mismatched_pixels, 18);
+  const Comparison on_edges = gllab::compare_images(reference, test, 2, 1, 48);
+  EXPECT_EQ(on_edges.mismatched_pixels, 81);
+  EXPECT_EQ(on_edges.edge_contrast, 48);
+}
+
+TEST(EdgeContrast, ScoreIsTheLargerShareInUnitsOfItsLimit) {
+  // 18 shifted pixels of 81, none unexcused.
+  const Comparison c = gllab::compare_images(vertical_line(4), vertical_line(5), 0, 1, 48);
+  Tolerance t{0, 0.01, 1, 48, 18.0 / 81.0};
+  EXPECT_NEAR(c.score(t), 1.0, kExact);
+  EXPECT_TRUE(c.passes(t));
+  t.max_shifted_share = 9.0 / 81.0;  // half of what moved: twice the limit
+  EXPECT_NEAR(c.score(t), 2.0, kExact);
+  EXPECT_FALSE(c.passes(t));
+  t.max_shifted_share = 0;  // nothing may move
+  EXPECT_EQ(c.score(t), HUGE_VAL);
+  t.edge_contrast = 0;  // not the contrast the counts were made with
+  EXPECT_THROW(c.score(t), std::invalid_argument);
+  EXPECT_THROW(gllab::compare_images(vertical_line(4), vertical_line(5), 0, 1, 256), std::invalid_argument);
+  // Identical images score 0 under any limits, zero ones included.
+  EXPECT_EQ(gllab::compare_images(ramp(0, 1), ramp(0, 1), 0, 1, 48).score({0, 0, 1, 48, 0}), 0.0);
+}
+
+TEST(EdgeContrast, HeatMapShowsAnUnexcusedSurfaceHot) {
+  const Image map = gllab::heat_map(ramp(40, 10), ramp(50, 10), 2, 1, 48);
+  EXPECT_EQ(map.pixel(4, 4)[0], 255);
+  EXPECT_EQ(map.pixel(4, 4)[2], 0);
+}
+
 }  // namespace
