@@ -19,6 +19,7 @@
 #include "harness/options.h"
 #include "image/image.h"
 #include "image/pam.h"
+#include "io/spline_json.h"
 
 int main(int argc, char** argv) {
   const std::string program = gllab::program_name(argv[0]);
@@ -63,11 +64,19 @@ int main(int argc, char** argv) {
     gllab::State frame_state = state;
     const std::vector<std::string> views = options.views.empty() ? std::vector<std::string>{state.view()} : options.views;
     gllab::Image image;
+    std::string text_sections;  // --text-out: "== VIEW N" and the view's N lines, per view
+    std::vector<std::string> printed;
     for (const std::string& view : views) {
       frame_state.select_view(view);
-      gllab::record_text(options.print_text);  // --print-text: what the frame writes on screen
+      // --print-text, --text-out: what the frame writes on screen
+      gllab::record_text(options.print_text || !options.text_out.empty());
       gllab::draw_frame(lab, frame_state);
       gllab::record_text(false);
+      printed = gllab::take_recorded_text();
+      if (!options.text_out.empty()) {
+        text_sections += "== " + view + " " + std::to_string(printed.size()) + "\n";
+        for (const std::string& line : printed) text_sections += line + "\n";
+      }
       glFinish();
       gllab::check_gl_errors("after the frame");
       const std::vector<std::string> errors = gllab::take_frame_errors();
@@ -89,9 +98,11 @@ int main(int argc, char** argv) {
       const std::vector<std::string> late = gllab::take_frame_errors();
       if (!late.empty()) return fail(1, late.front());
     }
+    if (!options.text_out.empty()) gllab::io::write_text_atomically(options.text_out, text_sections);
     if (options.out == "-") return 0;
     gllab::write_png(options.out, image);
-    for (const std::string& line : gllab::take_recorded_text()) std::printf("%s\n", line.c_str());
+    if (options.print_text)
+      for (const std::string& line : printed) std::printf("%s\n", line.c_str());
     return 0;
   } catch (const std::exception& e) {
     return fail(1, e.what());

@@ -67,6 +67,7 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == "--list-views") o.list_views = true;
     else if (a == "--info" && runner == Runner::kHeadless) o.info = true;
     else if (a == "--print-text" && runner == Runner::kHeadless) o.print_text = true;
+    else if (a == "--text-out" && runner == Runner::kHeadless) o.text_out = value();
     else if (a == "--help" || a == "-h") o.help = true;
     else throw UsageError("unknown option '" + a + "' (try --help)");
   }
@@ -142,7 +143,9 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
         << "(--out - writes the raw frame to stdout as PAM, for graders; --views a,b,c with\n"
         << "--out - renders several views in one run, one PAM each).\n"
         << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n"
-        << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n\n";
+        << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n"
+        << "--text-out FILE writes it to FILE instead, for every view: a line \"== VIEW N\", then\n"
+        << "its N lines (graders compare it with reference_images/<lab>__<view>.txt).\n\n";
   } else {
     out << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
         << "       " << program << " --list-views | --help\n\n"

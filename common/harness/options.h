@@ -30,6 +30,7 @@ struct Options {
   bool overlay = false;             // --overlay: draw the help overlay
   bool list_views = false;
   bool print_text = false;          // --print-text: print the frame's text on stdout (headless)
+  std::string text_out;             // --text-out FILE (headless): every view's text to FILE (graders)
   bool info = false;                // --info: print renderer and versions (headless)
   bool help = false;
 };
