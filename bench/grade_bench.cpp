@@ -1,5 +1,6 @@
 // bench/grade_bench.cpp — how long labgrade takes to grade every view of one
-// build (issue 7: under 10 s of wall time on this 2-core machine), measured
+// build (issue 7: under 10 s of wall time on this 2-core machine; issue 14:
+// under 3 s with 2 jobs, text and error views included), measured
 // with the code labgrade runs (tools/grading.h), in the same run as the way a
 // script of one's own would do it, as the peer:
 //
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <unistd.h>
@@ -36,14 +38,47 @@ using namespace gllab::grading;
 const fs::path kBin = GLLAB_BIN_DIR;
 const fs::path kRefs = GLLAB_REFERENCE_DIR;
 
-// The peer: render to a PNG file, read it back.
+// The peer: render to a PNG file, read it back (with its text, as a
+// folder of images has it).
 class PngFileSource : public Source {
  public:
+  std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
+    std::vector<Obtained> out;
+    for (const ViewId& id : views) {
+      if (id.error_view) {
+        const gllab::ProcessResult r =
+            gllab::run_process({(kBin / (id.lab + "_headless")).string(), "--view", id.view, "--out", "-"});
+        out.push_back(Obtained::failed(gllab::first_line(r.err), r.exit_status));
+        continue;
+      }
+      const fs::path text =
+          fs::temp_directory_path() / ("gllab-grade-bench-" + std::to_string(getpid()) + "-" + id.name() + ".txt");
+      try {
+        out.push_back(Obtained::drawn(obtain(id, text)));
+        std::ifstream in(text);
+        std::string header;
+        std::getline(in, header);  // "== VIEW N"
+        out.back().text.emplace();
+        for (std::string line; std::getline(in, line);) out.back().text->push_back(line);
+      } catch (const std::exception& e) {
+        out.push_back(Obtained::failed(e.what()));
+      }
+      fs::remove(text);
+    }
+    return out;
+  }
   gllab::Image obtain(const ViewId& id) const override {
+    const fs::path text =
+        fs::temp_directory_path() / ("gllab-grade-bench-" + std::to_string(getpid()) + "-" + id.name() + ".txt");
+    gllab::Image image = obtain(id, text);
+    fs::remove(text);
+    return image;
+  }
+  gllab::Image obtain(const ViewId& id, const fs::path& text) const {
     const fs::path file = fs::temp_directory_path() /
                           ("gllab-grade-bench-" + std::to_string(getpid()) + "-" + id.name() + ".png");
-    const gllab::ProcessResult r =
-        gllab::run_process({(kBin / (id.lab + "_headless")).string(), "--view", id.view, "--out", file.string()});
+    const gllab::ProcessResult r = gllab::run_process({(kBin / (id.lab + "_headless")).string(), "--view", id.view,
+                                                       "--out", file.string(), "--text-out", text.string()});
     if (r.exit_status != 0) throw SubmissionError(gllab::first_line(r.err));
     gllab::Image img = gllab::read_png(file.string());
     fs::remove(file);
@@ -62,7 +97,7 @@ void run(benchmark::State& state, const Source& source, const char* kind) {
   double total = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    const Grade g = grade(source, views, kRefs, manifest.tolerance, jobs, false);
+    const Grade g = grade(source, views, kRefs, judgement(manifest, Profile::kBuild), jobs, false);
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (g.passed() != static_cast<int>(views.size())) {
       g_failed = true;
@@ -100,6 +135,6 @@ int main(int argc, char** argv) {
   }
   const auto two = g_seconds.find("in_memory/2");
   if (two != g_seconds.end())
-    std::printf("target: under 10 s with 2 jobs: %s (%.2f s)\n", two->second < 10 ? "met" : "NOT met", two->second);
+    std::printf("target: under 3 s with 2 jobs: %s (%.2f s)\n", two->second < 3 ? "met" : "NOT met", two->second);
   return g_failed ? 1 : 0;
 }

@@ -9,6 +9,12 @@
 #include <set>
 #include <thread>
 
+#include <unistd.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+
 #include "image/pam.h"
 #include "process.h"
 
@@ -24,57 +30,131 @@ std::string joined(const std::set<std::string>& names) {
   return out;
 }
 
+// A temporary file for a renderer's --text-out, removed when done.
+class TextFile {
+ public:
+  TextFile() {
+    std::string name = (fs::temp_directory_path() / "gllab-text-XXXXXX").string();
+    const int fd = mkstemp(name.data());
+    if (fd < 0) throw std::runtime_error("cannot create a temporary file in " + fs::temp_directory_path().string());
+    close(fd);
+    path_ = name;
+  }
+  ~TextFile() {
+    std::error_code ec;
+    fs::remove(path_, ec);
+  }
+  TextFile(const TextFile&) = delete;
+  TextFile& operator=(const TextFile&) = delete;
+  const fs::path& path() const { return path_; }
+
+  // The sections "== VIEW N" + N lines, by view.
+  std::map<std::string, std::vector<std::string>> sections() const {
+    std::map<std::string, std::vector<std::string>> out;
+    std::ifstream in(path_, std::ios::binary);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("== ", 0) != 0) break;  // not our format: no text
+      const auto space = line.rfind(' ');
+      if (space <= 3) break;
+      std::vector<std::string>& lines = out[line.substr(3, space - 3)];
+      const long count = std::strtol(line.c_str() + space + 1, nullptr, 10);
+      for (long k = 0; k < count && std::getline(in, line); ++k) lines.push_back(line);
+    }
+    return out;
+  }
+
+ private:
+  fs::path path_;
+};
+
 class BuildSource : public Source {
  public:
   BuildSource(fs::path dir, std::vector<std::string> env, double timeout)
       : dir_(std::move(dir)), env_(std::move(env)), timeout_(timeout) {}
 
   Image obtain(const ViewId& id) const override {
-    const fs::path program = renderer(id.lab);
-    if (program.empty()) throw SubmissionError("no renderer " + id.lab + "_headless in " + dir_.string());
-    const ProcessResult r = run_process({program.string(), "--view", id.view, "--out", "-"}, env_, timeout_);
-    if (!r.started) throw SubmissionError(first_line(r.err));
-    if (r.timed_out) throw SubmissionError("the render took longer than " + std::to_string(int(timeout_)) + " s (killed)");
-    if (r.exit_status != 0) {
-      std::string why = first_line(r.err);
-      if (r.exit_status > 128) why = "crashed (signal " + std::to_string(r.exit_status - 128) + ")" + (why.empty() ? "" : ": " + why);
-      if (why.empty()) why = "exited with status " + std::to_string(r.exit_status);
-      throw SubmissionError(why);
-    }
-    try {
-      return decode_pam(r.out, id.lab + "_headless --view " + id.view);
-    } catch (const ImageError& e) {
-      throw SubmissionError(e.what());
-    }
+    Obtained o = render({id}).front();
+    if (!o.image) throw SubmissionError(o.error);
+    return std::move(*o.image);
   }
 
-  // <lab>_headless --views a,b,c --out -: one PAM per view, in order, until
-  // the first failure; the views after it are rendered one by one for their
-  // own reasons.
+  // Error views one by one (they exit 1); the others of the lab in one run,
+  // <lab>_headless --views a,b,c --out - --text-out FILE: one PAM per view,
+  // in order, until the first failure; the views after it are rendered one
+  // by one for their own reasons.
   std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
-    if (views.size() < 2) return Source::obtain_batch(views);
-    const fs::path program = renderer(views.front().lab);
-    if (program.empty()) return Source::obtain_batch(views);
-    std::string list;
-    for (const ViewId& v : views) list += (list.empty() ? "" : ",") + v.view;
-    const ProcessResult r =
-        run_process({program.string(), "--views", list, "--out", "-"}, env_, timeout_ * static_cast<double>(views.size()));
-    std::vector<Obtained> out;
-    std::size_t at = 0;
-    while (r.started && !r.timed_out && out.size() < views.size() && at < r.out.size()) {
-      try {
-        out.push_back({decode_pam_at(r.out, at, views[out.size()].lab + "_headless"), ""});
-      } catch (const ImageError&) {
-        break;  // a torn or foreign stream: the rest one by one
-      }
+    std::vector<Obtained> out(views.size());
+    std::vector<ViewId> drawn;
+    std::vector<std::size_t> at;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (views[i].error_view) out[i] = render({views[i]}).front();
+      else drawn.push_back(views[i]), at.push_back(i);
     }
-    for (std::size_t i = out.size(); i < views.size(); ++i) out.push_back(Source::obtain_batch({views[i]}).front());
+    std::vector<Obtained> got = render(drawn);
+    for (std::size_t k = 0; k < got.size(); ++k) out[at[k]] = std::move(got[k]);
     return out;
   }
 
   std::string describe() const override { return dir_.string(); }
 
  private:
+  std::vector<Obtained> render(const std::vector<ViewId>& views) const {
+    std::vector<Obtained> out;
+    if (views.empty()) return out;
+    const fs::path program = renderer(views.front().lab);
+    if (program.empty()) {
+      for (std::size_t i = 0; i < views.size(); ++i)
+        out.push_back(Obtained::failed("no renderer " + views.front().lab + "_headless in " + dir_.string()));
+      return out;
+    }
+    std::string list;
+    for (const ViewId& v : views) list += (list.empty() ? "" : ",") + v.view;
+    const TextFile text;
+    std::vector<std::string> argv = {program.string(), views.size() == 1 ? "--view" : "--views", list,
+                                     "--out", "-", "--text-out", text.path().string()};
+    const ProcessResult r = run_process(argv, env_, timeout_ * static_cast<double>(views.size()));
+    // A batch that failed anywhere: every view on its own, for its own reason
+    // (the text file is written only when all views were drawn).
+    if (views.size() > 1 && (!r.started || r.timed_out || r.exit_status != 0)) {
+      for (const ViewId& v : views) out.push_back(render({v}).front());
+      return out;
+    }
+    if (r.started && !r.timed_out && r.exit_status == 0) {
+      std::size_t at = 0;
+      try {
+        while (out.size() < views.size())
+          out.push_back(Obtained::drawn(decode_pam_at(r.out, at, views[out.size()].lab + "_headless")));
+      } catch (const ImageError& e) {
+        if (views.size() == 1) out.push_back(Obtained::failed(e.what()));
+        else out.clear();  // a torn or foreign stream: every view on its own
+      }
+      if (views.size() > 1 && out.size() < views.size()) {
+        out.clear();
+        for (const ViewId& v : views) out.push_back(render({v}).front());
+        return out;
+      }
+      const auto sections = text.sections();
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        const auto it = sections.find(views[i].view);
+        if (it != sections.end() && out[i].image) out[i].text = it->second;
+      }
+      return out;
+    }
+    out.push_back(Obtained::failed(why_not(r), r.exit_status));  // one view, and it gave no image
+    return out;
+  }
+
+  // One line: why a render gave no image.
+  std::string why_not(const ProcessResult& r) const {
+    if (!r.started) return first_line(r.err);
+    if (r.timed_out) return "the render took longer than " + std::to_string(int(timeout_)) + " s (killed)";
+    std::string why = first_line(r.err);
+    if (r.exit_status > 128)
+      why = "crashed (signal " + std::to_string(r.exit_status - 128) + ")" + (why.empty() ? "" : ": " + why);
+    if (why.empty() && r.exit_status != 0) why = "exited with status " + std::to_string(r.exit_status);
+    return why;
+  }
+
   fs::path renderer(const std::string& lab) const {
     for (const fs::path& p : {dir_ / (lab + "_headless"), dir_ / "bin" / (lab + "_headless")})
       if (fs::is_regular_file(p)) return p;
@@ -97,6 +177,17 @@ class ImageSource : public Source {
       throw SubmissionError(e.what());
     }
   }
+  std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
+    std::vector<Obtained> out = Source::obtain_batch(views);
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      std::ifstream in(dir_ / (views[i].name() + ".txt"), std::ios::binary);
+      if (!in) continue;
+      std::vector<std::string> lines;
+      for (std::string line; std::getline(in, line);) lines.push_back(line);
+      out[i].text = std::move(lines);
+    }
+    return out;
+  }
   std::string describe() const override { return dir_.string(); }
 
  private:
@@ -109,14 +200,22 @@ std::vector<Obtained> Source::obtain_batch(const std::vector<ViewId>& views) con
   std::vector<Obtained> out;
   for (const ViewId& v : views) {
     try {
-      out.push_back({obtain(v), ""});
+      out.push_back(Obtained::drawn(obtain(v)));
     } catch (const SubmissionError& e) {
-      out.push_back({std::nullopt, e.what()});
+      out.push_back(Obtained::failed(e.what()));
     } catch (const std::exception& e) {
-      out.push_back({std::nullopt, std::string("cannot grade: ") + e.what()});
+      out.push_back(Obtained::failed(std::string("cannot grade: ") + e.what()));
     }
   }
   return out;
+}
+
+const char* profile_name(Profile p) { return p == Profile::kBuild ? "build" : "images"; }
+
+Profile parse_profile(const std::string& name) {
+  if (name == "build") return Profile::kBuild;
+  if (name == "images") return Profile::kImages;
+  throw UsageError("unknown profile '" + name + "' (profiles: build, images)");
 }
 
 Manifest read_manifest(const fs::path& refs) {
@@ -129,21 +228,29 @@ Manifest read_manifest(const fs::path& refs) {
     const auto colon = line.find(": ");
     if (colon != std::string::npos) m.fields[line.substr(0, colon)] = line.substr(colon + 2);
   }
-  const auto number = [&](const char* key) {
+  const auto number = [&](const std::string& key) {
     const auto it = m.fields.find(key);
     if (it == m.fields.end()) throw UsageError(path.string() + ": no " + key);
     try {
       std::size_t used = 0;
       const double v = std::stod(it->second, &used);
-      if (used != it->second.size()) throw std::invalid_argument(key);
+      if (used != it->second.size() || !std::isfinite(v) || v < 0) throw std::invalid_argument(key);
       return v;
     } catch (const std::exception&) {
       throw UsageError(path.string() + ": malformed " + key + " '" + it->second + "'");
     }
   };
-  m.tolerance.channel_threshold = static_cast<int>(number("tolerance_channel_threshold"));
-  m.tolerance.shift_radius = static_cast<int>(number("tolerance_shift_radius"));
-  m.tolerance.max_differing_share = number("tolerance_max_differing_share");
+  for (Profile p : {Profile::kBuild, Profile::kImages}) {
+    Tolerance& t = p == Profile::kBuild ? m.build : m.images;
+    const std::string prefix = std::string(profile_name(p)) + "_";
+    t.channel_threshold = static_cast<int>(number(prefix + "channel_threshold"));
+    t.shift_radius = static_cast<int>(number(prefix + "shift_radius"));
+    t.edge_contrast = static_cast<int>(number(prefix + "edge_contrast"));
+    t.max_differing_share = number(prefix + "max_unexcused_share");
+    t.max_shifted_share = number(prefix + "max_shifted_share");
+  }
+  m.text_relative = number("text_relative_tolerance");
+  m.text_absolute = number("text_absolute_tolerance");
   return m;
 }
 
@@ -151,12 +258,13 @@ std::vector<ViewId> reference_views(const fs::path& refs) {
   if (!fs::is_directory(refs)) throw UsageError("no reference folder " + refs.string());
   std::vector<ViewId> views;
   for (const auto& entry : fs::directory_iterator(refs)) {
-    if (entry.path().extension() != ".png") continue;
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".png" && ext != ".error") continue;
     const std::string stem = entry.path().stem().string();
     const auto sep = stem.find("__");
     if (sep == std::string::npos || sep == 0 || sep + 2 >= stem.size())
-      throw UsageError("reference " + entry.path().string() + " is not named <lab>__<view>.png");
-    views.push_back({stem.substr(0, sep), stem.substr(sep + 2)});
+      throw UsageError("reference " + entry.path().string() + " is not named <lab>__<view>" + ext);
+    views.push_back({stem.substr(0, sep), stem.substr(sep + 2), ext == ".error"});
   }
   if (views.empty()) throw UsageError("no reference images in " + refs.string() + " (run: make references)");
   std::sort(views.begin(), views.end());
@@ -208,24 +316,83 @@ bool looks_like_build(const fs::path& dir) {
 
 namespace {
 
+// A line cut into words and numbers: numbers are compared by value, the
+// rest exactly. A number starts at a digit (or ".5", or a sign before
+// either) that does not continue a word: "P3" and "x2" stay words; strtod
+// reads it, exponent included.
+struct Token {
+  bool number = false;
+  std::string text;
+  double value = 0;
+};
+
+std::vector<Token> tokens(const std::string& line) {
+  const auto digit = [&](std::size_t k) { return k < line.size() && std::isdigit(static_cast<unsigned char>(line[k])); };
+  const auto word = [&](std::size_t k) { return std::isalnum(static_cast<unsigned char>(line[k])) || line[k] == '_'; };
+  std::vector<Token> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    std::size_t k = i + ((line[i] == '-' || line[i] == '+') ? 1 : 0);
+    const bool starts = (digit(k) || (k < line.size() && line[k] == '.' && digit(k + 1))) && (i == 0 || !word(i - 1));
+    if (starts) {
+      char* end = nullptr;
+      const double v = std::strtod(line.c_str() + i, &end);
+      const auto stop = static_cast<std::size_t>(end - line.c_str());
+      if (stop > i) {
+        out.push_back({true, line.substr(i, stop - i), v});
+        i = stop;
+        continue;
+      }
+    }
+    if (out.empty() || out.back().number) out.push_back({false, "", 0});
+    out.back().text += line[i++];
+  }
+  return out;
+}
+
+bool numbers_agree(double a, double b, double relative, double absolute) {
+  if (a == b) return true;
+  if (std::fabs(a) <= absolute && std::fabs(b) <= absolute) return true;
+  return std::fabs(a - b) <= relative * std::max(std::fabs(a), std::fabs(b));
+}
+
 // The verdict on one render (or on its absence).
-ViewResult judge(const ViewId& id, Obtained obtained, const Image& reference, const Tolerance& tolerance,
+ViewResult judge(const ViewId& id, Obtained obtained, const Reference& reference, const Judgement& j,
                  bool keep_image) {
   ViewResult r;
   r.id = id;
+  if (id.error_view) {
+    // It must refuse to draw: exit 1 with its error line.
+    if (obtained.image) r.reason = "drew a picture; it must exit 1 with \"" + reference.error_line + "\"";
+    else if (obtained.exit_status != 1) r.reason = "expected exit 1 with \"" + reference.error_line + "\", got: " + obtained.error;
+    else if (obtained.error != reference.error_line)
+      r.reason = "exit 1 with \"" + obtained.error + "\", the reference \"" + reference.error_line + "\"";
+    else r.passed = true;
+    return r;
+  }
   if (!obtained.image) {
     r.reason = obtained.error;
     return r;
   }
   try {
     Image& image = *obtained.image;
-    if (image.width != reference.width || image.height != reference.height) {
+    const Image& ref = reference.image;
+    if (image.width != ref.width || image.height != ref.height) {
       r.reason = "render is " + std::to_string(image.width) + "x" + std::to_string(image.height) + ", the reference " +
-                 std::to_string(reference.width) + "x" + std::to_string(reference.height);
+                 std::to_string(ref.width) + "x" + std::to_string(ref.height);
     } else {
-      r.comparison = compare_images(reference, image, tolerance.channel_threshold, tolerance.shift_radius);
-      r.passed = r.comparison->passes(tolerance);
+      r.comparison = compare_images(ref, image, j.tolerance);
+      r.score = r.comparison->score(j.tolerance);
+      r.passed = r.comparison->passes(j.tolerance);
       if (!r.passed) r.reason = "differs beyond tolerance";
+      if (reference.text) {
+        if (!obtained.text) r.text_reason = "no text from the render";
+        else r.text_reason = text_difference(*reference.text, *obtained.text, j.text_relative, j.text_absolute);
+        if (!r.text_reason.empty()) {
+          r.passed = false;
+          r.reason += (r.reason.empty() ? "" : "; ") + ("text differs: " + r.text_reason);
+        }
+      }
     }
     if (keep_image || !r.passed) r.submission = std::move(image);
   } catch (const std::exception& e) {
@@ -236,10 +403,45 @@ ViewResult judge(const ViewId& id, Obtained obtained, const Image& reference, co
 
 }  // namespace
 
-ViewResult grade_view(const Source& source, const ViewId& id, const Image& reference, const Tolerance& tolerance,
+std::string text_difference(const std::vector<std::string>& reference, const std::vector<std::string>& got,
+                            double relative, double absolute) {
+  const std::size_t n = std::max(reference.size(), got.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string where = "line " + std::to_string(i + 1) + ": ";
+    if (i >= got.size()) return where + "missing, the reference \"" + reference[i] + "\"";
+    if (i >= reference.size()) return where + "\"" + got[i] + "\", not in the reference";
+    const std::vector<Token> a = tokens(reference[i]), b = tokens(got[i]);
+    bool same = a.size() == b.size();
+    for (std::size_t k = 0; same && k < a.size(); ++k)
+      same = a[k].number == b[k].number &&
+             (a[k].number ? numbers_agree(a[k].value, b[k].value, relative, absolute) : a[k].text == b[k].text);
+    if (!same) return where + "\"" + got[i] + "\", the reference \"" + reference[i] + "\"";
+  }
+  return "";
+}
+
+Reference read_reference(const fs::path& refs, const ViewId& id) {
+  Reference r;
+  if (id.error_view) {
+    std::ifstream in(refs / (id.name() + ".error"), std::ios::binary);
+    if (!in || !std::getline(in, r.error_line)) throw std::runtime_error("cannot read " + (refs / (id.name() + ".error")).string());
+    return r;
+  }
+  r.image = read_png((refs / (id.name() + ".png")).string());
+  std::ifstream in(refs / (id.name() + ".txt"), std::ios::binary);
+  if (in) {
+    r.text.emplace();
+    for (std::string line; std::getline(in, line);) r.text->push_back(line);
+  }
+  return r;
+}
+
+Judgement judgement(const Manifest& m, Profile p) { return {p, m.tolerance(p), m.text_relative, m.text_absolute}; }
+
+ViewResult grade_view(const Source& source, const ViewId& id, const Reference& reference, const Judgement& j,
                       bool keep_image) {
   const auto start = std::chrono::steady_clock::now();
-  ViewResult r = judge(id, source.obtain_batch({id}).front(), reference, tolerance, keep_image);
+  ViewResult r = judge(id, source.obtain_batch({id}).front(), reference, j, keep_image);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -260,7 +462,7 @@ std::map<std::string, std::pair<int, int>> Grade::by_lab() const {
   return labs;
 }
 
-Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::path& refs, const Tolerance& tolerance,
+Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::path& refs, const Judgement& j,
             int jobs, bool keep_images, const Progress& progress) {
   Grade g;
   g.submission = source.describe();
@@ -291,11 +493,11 @@ Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::pa
         const std::size_t i = group[b];
         ViewResult r;
         try {
-          const Image reference = read_png((refs / (views[i].name() + ".png")).string());
-          r = judge(views[i], std::move(renders[b]), reference, tolerance, keep_images);
+          const Reference reference = read_reference(refs, views[i]);
+          r = judge(views[i], std::move(renders[b]), reference, j, keep_images);
           r.seconds = each;
           // From a batch, a failure is confirmed by a render of its own.
-          if (!r.passed && r.comparison && batch.size() > 1) r = grade_view(source, views[i], reference, tolerance, keep_images);
+          if (!r.passed && r.comparison && batch.size() > 1) r = grade_view(source, views[i], reference, j, keep_images);
         } catch (const std::exception& e) {
           r.id = views[i];
           r.reason = std::string("cannot read the reference: ") + e.what();

@@ -8,11 +8,24 @@
 // that crashes, exits with an error, takes too long or has the wrong size.
 // Nothing is skipped silently.
 //
-// The metric (compare.h, calibrated in tests/grading/): a pixel differs when
-// a channel is off by more than the MANIFEST's channel threshold; a differing
-// pixel is excused when a shift of up to the shift radius explains it (a line
-// drawn one pixel over); the view passes when the unexcused share of pixels is
-// at most the MANIFEST's max_differing_share.
+// Two profiles, each with its own limits in the MANIFEST (calibrated in
+// tests/grading/, stated in README.md "Grading"):
+//   build   labgrade renders a student's build with the reference renderer;
+//           benign variation is correct code computing the same thing another
+//           way, so the limits are tight;
+//   images  renders made elsewhere (softpipe, other llvmpipe settings, a
+//           window); the limits allow a foreign renderer's lighting and lines.
+// In both, a pixel differs when a channel is off by more than the profile's
+// channel threshold; a differing pixel is excused when a shift of up to the
+// shift radius explains it on a thin feature (a line or edge moved, not a
+// surface's colour changed); the view passes when both the unexcused and the
+// excused share stay within the profile's limits (compare.h, score()).
+//
+// The text a view draws is graded too: reference_images/<lab>__<view>.txt
+// holds its --print-text lines; words must match exactly, numbers within the
+// MANIFEST's relative tolerance. An error view (it must refuse to draw) has
+// reference_images/<lab>__<view>.error, the one line it must exit 1 with;
+// a build is graded on it, a folder of images cannot be.
 #pragma once
 
 #include <filesystem>
@@ -34,24 +47,34 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+enum class Profile { kBuild, kImages };
+const char* profile_name(Profile p);
+/// "build" or "images"; throws UsageError for anything else.
+Profile parse_profile(const std::string& name);
+
 /// reference_images/MANIFEST: "key: value" lines (# comments).
 struct Manifest {
   std::map<std::string, std::string> fields;
-  Tolerance tolerance;
+  Tolerance build, images;        // <profile>_channel_threshold, ..._max_shifted_share
+  double text_relative = 0;       // text_relative_tolerance: |a - b| <= this * max(|a|, |b|)
+  double text_absolute = 0;       // text_absolute_tolerance: and numbers this small are equal
+  const Tolerance& tolerance(Profile p) const { return p == Profile::kBuild ? build : images; }
 };
 /// Throws UsageError naming the file and the missing or malformed key.
 Manifest read_manifest(const std::filesystem::path& refs);
 
-/// One view: reference_images/<lab>__<view>.png.
+/// One view: reference_images/<lab>__<view>.png, or <lab>__<view>.error for
+/// an error view.
 struct ViewId {
   std::string lab, view;
+  bool error_view = false;
   std::string name() const { return lab + "__" + view; }
   bool operator<(const ViewId& o) const { return name() < o.name(); }
   bool operator==(const ViewId& o) const { return lab == o.lab && view == o.view; }
 };
 
-/// Every reference PNG in refs, sorted by name. Throws UsageError when
-/// there is none or a name is not <lab>__<view>.png.
+/// Every reference PNG and .error file in refs, sorted by name. Throws
+/// UsageError when there is none or a name is not <lab>__<view>.png/.error.
 std::vector<ViewId> reference_views(const std::filesystem::path& refs);
 
 /// Keeps the views whose lab matches one of `labs` ("13" or "15_bspline_curves")
@@ -65,7 +88,28 @@ std::vector<ViewId> select_views(const std::vector<ViewId>& all, const std::vect
 struct Obtained {
   std::optional<Image> image;
   std::string error;  // set when image is empty
+  std::optional<std::vector<std::string>> text;  // the lines the view drew, when the source has them
+  int exit_status = 0;  // a build's renderer: how it exited (error views pass on 1)
+
+  static Obtained drawn(Image image) {
+    Obtained o;
+    o.image = std::move(image);
+    return o;
+  }
+  static Obtained failed(std::string why, int exit_status = 0) {
+    Obtained o;
+    o.error = std::move(why);
+    o.exit_status = exit_status;
+    return o;
+  }
 };
+
+/// The first difference between a view's text and its reference, as one
+/// line ("line 3: \"n = 12\", the reference \"n = 13\""), or "" when they
+/// agree: the same number of lines, the same words and spacing, and each
+/// number within relative (or, for numbers both under absolute, any).
+std::string text_difference(const std::vector<std::string>& reference, const std::vector<std::string>& got,
+                            double relative, double absolute);
 
 class Source {
  public:
@@ -104,17 +148,34 @@ struct ViewResult {
   bool passed = false;
   std::string reason;                // why it failed; empty when it passed
   std::optional<Comparison> comparison;  // when a render and the reference were compared
+  double score = 0;                  // comparison->score(tolerance): <= 1 passes (0 without one)
+  std::string text_reason;           // the text's first difference, when it differs
   double seconds = 0;                // obtaining the render plus the comparison
   std::optional<Image> submission;   // kept when asked for (reports, failures)
 };
 
-/// The metric the view is judged by: the unexcused share of pixels.
-inline double metric(const Comparison& c) { return c.mismatched_share(); }
+/// What a view is judged against: its reference image (none for an error
+/// view), its text (when the reference has a .txt), its error line.
+struct Reference {
+  Image image;
+  std::optional<std::vector<std::string>> text;
+  std::string error_line;  // an error view's expected first line of stderr
+};
+/// Reads refs/<view>.png (or .error) and refs/<view>.txt. Throws on a missing or bad file.
+Reference read_reference(const std::filesystem::path& refs, const ViewId& id);
 
-/// Grades one view: obtains the render, compares it with the reference
-/// (already read), keeps the submission image when keep_image or when it
-/// failed a comparison. Never throws for a bad submission.
-ViewResult grade_view(const Source& source, const ViewId& id, const Image& reference, const Tolerance& tolerance,
+/// How a grade judges: the profile's tolerance and the text tolerance.
+struct Judgement {
+  Profile profile = Profile::kBuild;
+  Tolerance tolerance;
+  double text_relative = 0, text_absolute = 0;
+};
+Judgement judgement(const Manifest& m, Profile p);
+
+/// Grades one view: obtains the render, compares it with the reference,
+/// keeps the submission image when keep_image or when it failed a
+/// comparison. Never throws for a bad submission.
+ViewResult grade_view(const Source& source, const ViewId& id, const Reference& reference, const Judgement& judge,
                       bool keep_image);
 
 struct Grade {
@@ -142,6 +203,6 @@ using Progress = std::function<void(const ProgressEvent&)>;
 /// and graded from that render, so a verdict never depends on which views
 /// a process drew before (references are rendered one view per process).
 Grade grade(const Source& source, const std::vector<ViewId>& views, const std::filesystem::path& refs,
-            const Tolerance& tolerance, int jobs, bool keep_images, const Progress& progress = nullptr);
+            const Judgement& judge, int jobs, bool keep_images, const Progress& progress = nullptr);
 
 }  // namespace gllab::grading

@@ -4,7 +4,7 @@
 //   labgrade --images DIR   grade a folder of <lab>__<view>.png
 //   labgrade --class DIR    grade every submission (build or image folder) in DIR: one CSV
 //   options: --labs 15,22  --views a,b  --jobs N  --report DIR  --out DIR  --refs DIR
-//            --env NAME=VALUE  --timeout SECONDS  --csv FILE  --quiet
+//            --env NAME=VALUE  --timeout SECONDS  --csv FILE  --profile build|images  --quiet
 //
 // Exit status: 0 every view passed, 1 some failed, 2 usage or input error.
 // The metric and its calibration: grading.h and README.md ("Grading").
@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -38,16 +39,20 @@ struct Settings {
   std::vector<std::string> labs, views, env;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double timeout = kDefaultTimeoutSeconds;
+  std::optional<Profile> profile;  // --profile; else build for a build, images for images
   bool quiet = false;
 };
 
 const char kUsage[] =
     "usage: labgrade --build DIR | --images DIR | --class DIR [options]\n\n"
     "Grades renders of the labs against reference_images/<lab>__<view>.png, every\n"
-    "view the references define, with the tolerance in reference_images/MANIFEST.\n\n"
+    "view the references define, with the tolerances in reference_images/MANIFEST,\n"
+    "and the text each view draws against <lab>__<view>.txt.\n\n"
     "  --build DIR        a build of this repository: DIR/bin/<lab>_headless (or\n"
-    "                     DIR/<lab>_headless) renders each view\n"
-    "  --images DIR       a folder of PNGs named <lab>__<view>.png\n"
+    "                     DIR/<lab>_headless) renders each view; error views must\n"
+    "                     exit 1 with their line (<lab>__<view>.error)\n"
+    "  --images DIR       a folder of PNGs named <lab>__<view>.png, each with its\n"
+    "                     text: <lab>__<view>.txt (the headless --print-text output)\n"
     "  --class DIR        every folder in DIR is one student's build or image folder;\n"
     "                     writes one CSV: a row per student, a column per lab\n"
     "  --labs 15,22       only these labs (number or folder name)\n"
@@ -60,6 +65,9 @@ const char kUsage[] =
     "  --env NAME=VALUE   environment for the renderers, e.g. GALLIUM_DRIVER=softpipe\n"
     "  --timeout SECONDS  a render running longer fails (default 60)\n"
     "  --csv FILE         --class: the CSV to write (default class.csv)\n"
+    "  --profile NAME     the limits to judge by: build (the same renderer, tight)\n"
+    "                     or images (another renderer); default: build for a build,\n"
+    "                     images for a folder of images\n"
     "  --quiet            no progress and no per-view table, only the summary\n\n"
     "Exit status: 0 all views passed, 1 some failed, 2 usage or input error.\n";
 
@@ -94,6 +102,7 @@ Settings parse(int argc, char** argv) {
     else if (a == "--refs") s.refs = value();
     else if (a == "--csv") s.csv = value();
     else if (a == "--quiet") s.quiet = true;
+    else if (a == "--profile") s.profile = parse_profile(value());
     else if (a == "--env") {
       const std::string e = value();
       if (e.find('=') == std::string::npos || e.front() == '=')
@@ -152,19 +161,20 @@ class Console {
   bool quiet_, tty_;
 };
 
-void print_table(const Grade& g, const Tolerance& t) {
+void print_table(const Grade& g) {
   std::size_t width = 4;
   for (const ViewResult& v : g.views) width = std::max(width, v.id.name().size());
-  std::printf("%-*s  %-6s %10s %9s  %s\n", int(width), "view", "result", "differing", "max delta",
-              "metric: unexcused share / limit");
+  std::printf("%-*s  %-6s %10s %9s %9s %9s  %s\n", int(width), "view", "result", "differing", "max delta",
+              "unexcused", "shifted", "score (pass <= 1)");
   for (const ViewResult& v : g.views) {
     if (v.comparison) {
       const gllab::Comparison& c = *v.comparison;
-      std::printf("%-*s  %-6s %10s %9d  %s / %s\n", int(width), v.id.name().c_str(), v.passed ? "pass" : "FAIL",
-                  percent(c.differing_share()).c_str(), c.max_delta, percent(metric(c)).c_str(),
-                  percent(t.max_differing_share).c_str());
+      std::printf("%-*s  %-6s %10s %9d %9lld %9lld  %.3g\n", int(width), v.id.name().c_str(),
+                  v.passed ? "pass" : "FAIL", percent(c.differing_share()).c_str(), c.max_delta,
+                  c.mismatched_pixels, c.shifted_pixels(), v.score);
     } else {
-      std::printf("%-*s  %-6s %10s %9s  %s\n", int(width), v.id.name().c_str(), "FAIL", "-", "-", "-");
+      std::printf("%-*s  %-6s %10s %9s %9s %9s  %s\n", int(width), v.id.name().c_str(), v.passed ? "pass" : "FAIL",
+                  "-", "-", "-", "-", v.id.error_view ? "error view" : "-");
     }
     if (!v.passed) std::printf("    %s\n", v.reason.c_str());
   }
@@ -178,13 +188,23 @@ std::string lab_summary(const Grade& g) {
   return text.empty() ? "every lab complete" : "incomplete: " + text;
 }
 
-void print_summary(const Grade& g, const Tolerance& t) {
+std::string metric_text(const Judgement& j) {
+  const Tolerance& t = j.tolerance;
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "profile %s: a pixel differs when a channel is off by more than %d, unless a %d-pixel shift explains "
+                "it on a thin feature (a neighbour %d or more apart); a view passes when at most %s of its pixels "
+                "differ unexcused and at most %s are excused, and its text agrees (numbers within %g relative)",
+                profile_name(j.profile), t.channel_threshold, t.shift_radius, t.edge_contrast,
+                percent(t.max_differing_share).c_str(), percent(t.max_shifted_share).c_str(), j.text_relative);
+  return text;
+}
+
+void print_summary(const Grade& g, const Judgement& j) {
   const int total = static_cast<int>(g.views.size()), passed = g.passed();
   std::printf("%d views: %d passed, %d failed; score %.1f%% (%s)\n", total, passed, total - passed, g.score(),
               lab_summary(g).c_str());
-  std::printf("metric: a pixel differs when a channel is off by more than %d, unless a %d-pixel shift explains it; "
-              "a view passes when at most %s of its pixels differ so\n",
-              t.channel_threshold, t.shift_radius, percent(t.max_differing_share).c_str());
+  std::printf("%s\n", metric_text(j).c_str());
 }
 
 // ---- files -------------------------------------------------------------------------
@@ -230,32 +250,38 @@ void write_failures(const Grade& g, const Settings& s, const Tolerance& t) {
     gllab::write_png((s.out / (v.id.name() + ".png")).string(), *v.submission, 1);
     if (v.comparison)
       gllab::write_png((s.out / (v.id.name() + ".diff.png")).string(),
-                       gllab::heat_map(reference, *v.submission, t.channel_threshold, t.shift_radius), 1);
+                       gllab::heat_map(reference, *v.submission, t.channel_threshold, t.shift_radius,
+                                       t.edge_contrast),
+                       1);
   }
   if (any) std::printf("failing renders and heat maps (<view>.diff.png): %s/\n", s.out.c_str());
 }
 
-nlohmann::ordered_json view_json(const ViewResult& v, const Tolerance& t) {
+nlohmann::ordered_json view_json(const ViewResult& v) {
   nlohmann::ordered_json j;
   j["lab"] = v.id.lab;
   j["view"] = v.id.view;
+  j["kind"] = v.id.error_view ? "error" : "image";
   j["result"] = v.passed ? "pass" : "fail";
   j["reason"] = v.reason;
+  j["text"] = v.text_reason.empty() ? nullptr : nlohmann::ordered_json(v.text_reason);
   if (v.comparison) {
+    j["score"] = v.score;
     j["differing_pixels"] = v.comparison->differing_pixels;
     j["differing_share"] = v.comparison->differing_share();
     j["unexcused_pixels"] = v.comparison->mismatched_pixels;
-    j["metric"] = metric(*v.comparison);
+    j["shifted_pixels"] = v.comparison->shifted_pixels();
     j["max_delta"] = v.comparison->max_delta;
   } else {
-    j["differing_pixels"] = j["differing_share"] = j["unexcused_pixels"] = j["metric"] = j["max_delta"] = nullptr;
+    j["score"] = j["differing_pixels"] = j["differing_share"] = j["unexcused_pixels"] = j["shifted_pixels"] =
+        j["max_delta"] = nullptr;
   }
-  j["limit"] = t.max_differing_share;
   j["seconds"] = std::round(v.seconds * 1000) / 1000;
   return j;
 }
 
-void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, const Tolerance& t) {
+void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, const Judgement& judge) {
+  const Tolerance& t = judge.tolerance;
   for (const char* sub : {"reference", "submission", "heat_map"}) fs::create_directories(dir / sub);
   // Failures first, then by name.
   std::vector<const ViewResult*> rows;
@@ -267,10 +293,13 @@ void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, con
   json["views"] = g.views.size();
   json["passed"] = g.passed();
   json["score"] = g.score();
+  json["profile"] = profile_name(judge.profile);
   json["tolerance"] = {{"channel_threshold", t.channel_threshold}, {"shift_radius", t.shift_radius},
-                       {"max_unexcused_share", t.max_differing_share}};
+                       {"edge_contrast", t.edge_contrast}, {"max_unexcused_share", t.max_differing_share},
+                       {"max_shifted_share", t.max_shifted_share}, {"text_relative", judge.text_relative},
+                       {"text_absolute", judge.text_absolute}};
   json["results"] = nlohmann::ordered_json::array();
-  std::string csv = "lab,view,result,metric,limit,differing_share,unexcused_pixels,max_delta,reason\n";
+  std::string csv = "lab,view,result,score,differing_share,unexcused_pixels,shifted_pixels,max_delta,reason\n";
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>gllab grade</title>\n"
        << "<style>body{font-family:sans-serif;margin:1.5em;background:#fafafa}"
@@ -281,38 +310,40 @@ void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, con
        << "</style></head><body>\n<h1>gllab grade</h1>\n<p>Submission: <code>" << html_escape(g.submission)
        << "</code>. " << g.views.size() << " views, " << g.passed() << " passed, "
        << g.views.size() - g.passed() << " failed; score " << std::round(g.score() * 10) / 10 << "%.</p>\n"
-       << "<p>Metric: a pixel differs when a channel is off by more than " << t.channel_threshold
-       << ", unless a shift of " << t.shift_radius << " pixel explains it; a view passes when at most "
-       << percent(t.max_differing_share) << " of its pixels differ so. Heat map: grey = equal, blue = "
-       << "excused by the shift, yellow to red = differs.</p>\n<table>\n<tr><th>view</th><th>result</th>"
-       << "<th>metric / limit</th><th>reference</th><th>submission</th><th>heat map</th></tr>\n";
+       << "<p>Metric, " << html_escape(metric_text(judge)) << ". The score is the larger share in units of its "
+       << "limit. Heat map: grey = equal, blue = excused by the shift, yellow to red = differs.</p>\n<table>\n"
+       << "<tr><th>view</th><th>result</th><th>score (pass &le; 1)</th><th>reference</th><th>submission</th>"
+       << "<th>heat map</th></tr>\n";
   for (const ViewResult* v : rows) {
     const std::string name = v->id.name() + ".png";
-    fs::copy_file(refs / name, dir / "reference" / name, fs::copy_options::overwrite_existing);
+    const bool has_reference = !v->id.error_view;
+    if (has_reference) fs::copy_file(refs / name, dir / "reference" / name, fs::copy_options::overwrite_existing);
     const bool has_render = v->submission.has_value();
     if (has_render) gllab::write_png((dir / "submission" / name).string(), *v->submission, 1);
     if (has_render && v->comparison)
       gllab::write_png((dir / "heat_map" / name).string(),
                        gllab::heat_map(gllab::read_png((refs / name).string()), *v->submission, t.channel_threshold,
-                                       t.shift_radius),
+                                       t.shift_radius, t.edge_contrast),
                        1);
     const auto cell = [&](bool present, const std::string& folder, const std::string& missing) {
       return present ? "<td><a href=\"" + folder + "/" + name + "\"><img src=\"" + folder + "/" + name + "\" alt=\"" +
                            folder + " " + v->id.name() + "\"></a></td>"
                      : "<td><div class=\"none\">" + missing + "</div></td>";
     };
+    char score[32] = "-";
+    if (v->comparison) std::snprintf(score, sizeof score, "%.3g", v->score);
     html << "<tr class=\"" << (v->passed ? "pass" : "fail") << "\"><td><code>" << html_escape(v->id.name())
          << "</code>" << (v->reason.empty() ? "" : "<br>" + html_escape(v->reason)) << "</td><td class=\"result\">"
-         << (v->passed ? "pass" : "FAIL") << "</td><td>"
-         << (v->comparison ? percent(metric(*v->comparison)) : std::string("-")) << " / "
-         << percent(t.max_differing_share) << "</td>" << cell(true, "reference", "") << cell(has_render, "submission", "no render")
+         << (v->passed ? "pass" : "FAIL") << "</td><td>" << (v->id.error_view ? "error view" : score) << "</td>"
+         << cell(has_reference, "reference", "no image: it must exit 1")
+         << cell(has_render, "submission", v->id.error_view ? "exit 1" : "no render")
          << cell(has_render && v->comparison.has_value(), "heat_map", "not compared") << "</tr>\n";
-    json["results"].push_back(view_json(*v, t));
+    json["results"].push_back(view_json(*v));
     const nlohmann::ordered_json& j = json["results"].back();
     const auto number = [](const nlohmann::ordered_json& x) { return x.is_null() ? std::string() : x.dump(); };
     csv += csv_field(v->id.lab) + "," + csv_field(v->id.view) + "," + (v->passed ? "pass" : "fail") + "," +
-           number(j["metric"]) + "," + number(j["limit"]) + "," + number(j["differing_share"]) + "," +
-           number(j["unexcused_pixels"]) + "," + number(j["max_delta"]) + "," + csv_field(v->reason) + "\n";
+           number(j["score"]) + "," + number(j["differing_share"]) + "," + number(j["unexcused_pixels"]) + "," +
+           number(j["shifted_pixels"]) + "," + number(j["max_delta"]) + "," + csv_field(v->reason) + "\n";
   }
   // The page checks its own images once loaded (the test reads the title).
   html << "</table>\n<script>window.addEventListener('load',function(){var i=document.images,ok=0;"
@@ -326,24 +357,44 @@ void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, con
 
 // ---- modes ---------------------------------------------------------------------------
 
-Grade grade_one(const Source& source, const std::vector<ViewId>& views, const Settings& s, const Tolerance& t,
+Grade grade_one(const Source& source, const std::vector<ViewId>& views, const Settings& s, const Judgement& j,
                 bool keep_images) {
   Console console(s.quiet);
-  return grade(source, views, s.refs, t, s.jobs, keep_images, [&](const ProgressEvent& e) { console(e); });
+  return grade(source, views, s.refs, j, s.jobs, keep_images, [&](const ProgressEvent& e) { console(e); });
 }
 
-int run_single(const Settings& s, const std::vector<ViewId>& views, const Tolerance& t) {
-  const std::unique_ptr<Source> source =
-      s.mode == Settings::Mode::kBuild ? build_source(s.input, s.env, s.timeout) : image_source(s.input);
-  const Grade g = grade_one(*source, views, s, t, !s.report.empty());
-  if (!s.quiet) print_table(g, t);
-  print_summary(g, t);
-  write_failures(g, s, t);
-  if (!s.report.empty()) write_report(g, s.report, s.refs, t);
+// A folder of images cannot show how a program exits: its error views are
+// graded from builds only, and said so.
+std::vector<ViewId> gradable(const std::vector<ViewId>& views, bool build, bool quiet) {
+  if (build) return views;
+  std::vector<ViewId> out;
+  for (const ViewId& v : views)
+    if (!v.error_view) out.push_back(v);
+  if (out.size() != views.size() && !quiet)
+    std::printf("%zu error view%s not graded: a folder of images cannot show an exit status (grade a build)\n",
+                views.size() - out.size(), views.size() - out.size() == 1 ? "" : "s");
+  if (out.empty()) throw UsageError("no view to grade from images: every view selected is an error view");
+  return out;
+}
+
+Judgement judgement_for(const Settings& s, const Manifest& m, bool build) {
+  return judgement(m, s.profile ? *s.profile : build ? Profile::kBuild : Profile::kImages);
+}
+
+int run_single(const Settings& s, const std::vector<ViewId>& all, const Manifest& m) {
+  const bool build = s.mode == Settings::Mode::kBuild;
+  const std::vector<ViewId> views = gradable(all, build, s.quiet);
+  const Judgement j = judgement_for(s, m, build);
+  const std::unique_ptr<Source> source = build ? build_source(s.input, s.env, s.timeout) : image_source(s.input);
+  const Grade g = grade_one(*source, views, s, j, !s.report.empty());
+  if (!s.quiet) print_table(g);
+  print_summary(g, j);
+  write_failures(g, s, j.tolerance);
+  if (!s.report.empty()) write_report(g, s.report, s.refs, j);
   return g.passed() == static_cast<int>(g.views.size()) ? 0 : 1;
 }
 
-int run_class(const Settings& s, const std::vector<ViewId>& views, const Tolerance& t) {
+int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest& m) {
   if (!fs::is_directory(s.input)) throw UsageError("no class folder " + s.input.string());
   std::vector<fs::path> students;
   for (const auto& entry : fs::directory_iterator(s.input))
@@ -351,7 +402,7 @@ int run_class(const Settings& s, const std::vector<ViewId>& views, const Toleran
   std::sort(students.begin(), students.end());
   if (students.empty()) throw UsageError("no submission folders in " + s.input.string());
   std::vector<std::string> labs;
-  for (const ViewId& v : views)
+  for (const ViewId& v : all)
     if (labs.empty() || labs.back() != v.lab) labs.push_back(v.lab);
   std::string csv = "student,kind,views,passed,score";
   for (const std::string& lab : labs) csv += "," + lab;
@@ -359,8 +410,10 @@ int run_class(const Settings& s, const std::vector<ViewId>& views, const Toleran
   bool all_passed = true;
   for (const fs::path& student : students) {
     const bool build = looks_like_build(student);
+    const std::vector<ViewId> views = gradable(all, build, true);
+    const Judgement j = judgement_for(s, m, build);
     const std::unique_ptr<Source> source = build ? build_source(student, s.env, s.timeout) : image_source(student);
-    const Grade g = grade_one(*source, views, s, t, !s.report.empty());
+    const Grade g = grade_one(*source, views, s, j, !s.report.empty());
     all_passed = all_passed && g.passed() == static_cast<int>(g.views.size());
     std::printf("%-24s %-6s %3d/%zu views  score %5.1f%%  (%s)\n", student.filename().c_str(), build ? "build" : "images",
                 g.passed(), g.views.size(), g.score(), lab_summary(g).c_str());
@@ -370,12 +423,12 @@ int run_class(const Settings& s, const std::vector<ViewId>& views, const Toleran
            std::to_string(g.views.size()) + "," + std::to_string(g.passed()) + "," + score;
     const auto by_lab = g.by_lab();
     for (const std::string& lab : labs) {
-      const auto& [passed, total] = by_lab.at(lab);
-      std::snprintf(score, sizeof score, "%.1f", 100.0 * passed / total);
-      csv += std::string(",") + score;
+      const auto it = by_lab.find(lab);  // absent: only error views, not graded from images
+      if (it != by_lab.end()) std::snprintf(score, sizeof score, "%.1f", 100.0 * it->second.first / it->second.second);
+      csv += std::string(",") + (it != by_lab.end() ? score : "-");
     }
     csv += "\n";
-    if (!s.report.empty()) write_report(g, s.report / student.filename(), s.refs, t);
+    if (!s.report.empty()) write_report(g, s.report / student.filename(), s.refs, j);
   }
   write_text(s.csv, csv);
   std::printf("%zu submissions; one row each, one column per lab (percent of its views passed): %s\n",
@@ -390,8 +443,7 @@ int main(int argc, char** argv) {
     const Settings s = parse(argc, argv);
     const Manifest manifest = read_manifest(s.refs);
     const std::vector<ViewId> views = select_views(reference_views(s.refs), s.labs, s.views);
-    return s.mode == Settings::Mode::kClass ? run_class(s, views, manifest.tolerance)
-                                            : run_single(s, views, manifest.tolerance);
+    return s.mode == Settings::Mode::kClass ? run_class(s, views, manifest) : run_single(s, views, manifest);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "labgrade: %s\n", e.what());
     return 2;

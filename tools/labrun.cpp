@@ -28,19 +28,30 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Tolerance written to MANIFEST by --update-references and read back by
-// labgrade (calibrated in tests/grading/ and README.md "Grading"):
-//  - lighting differs between llvmpipe and softpipe by at most 8 per channel;
-//  - softpipe draws one-pixel lines one pixel over (up to 0.4% of a
-//    wireframe view's pixels), which a shift radius of 1 excuses;
-//  - what remains must be under 0.1% of the pixels (262 of 512x512): with
-//    all 17 labs softpipe's worst view left 101 (0.039%), the closest real
-//    mistake 1785; 262 is 2.6x the one and 1/6.8 of the other (it was 0.05%
-//    with labs 01-07, whose worst was 76, a margin of 1.3x once the surface
-//    labs came).
-constexpr int kDefaultChannelThreshold = 24;
-constexpr int kDefaultShiftRadius = 1;
-constexpr double kDefaultMaxDifferingShare = 0.001;
+// The two grading profiles written to MANIFEST by --update-references and
+// read back by labgrade (tools/grading.h; calibrated in tests/grading/, the
+// measurements in README.md "Grading" and docs/grading_calibration.md).
+struct ProfileLimits {
+  const char* name;
+  int channel_threshold, shift_radius, edge_contrast;
+  double max_unexcused_share, max_shifted_share;
+};
+// build: the reference renderer on a student's build. Correct code that
+// computes the same values another way renders byte-identical, or within 1
+// per channel (a rotation split in two): a threshold of 2 sees a shading
+// error spread over a surface, and 48 keeps the shift excuse to real edges.
+// images: a foreign renderer. softpipe lights up to 8 per channel apart and
+// draws one-pixel lines one pixel over (up to 3.5% of a view's pixels); a
+// threshold of 12 (edges: a neighbour 13 apart, more than the threshold)
+// leaves at most 111 of its pixels unexcused, as 24 left 101.
+constexpr ProfileLimits kProfiles[] = {
+    {"build", 2, 1, 48, 0.0001, 0.001},
+    {"images", 12, 1, 13, 0.001, 0.1},
+};
+// Text: numbers within this relative difference agree; numbers both under
+// the absolute bound (rounding noise such as 3e-17) agree whatever they are.
+constexpr double kTextRelative = 1e-6;
+constexpr double kTextAbsolute = 1e-9;
 
 struct Settings {
   std::vector<std::string> labs;  // empty: all
@@ -154,6 +165,16 @@ std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
   return views;
 }
 
+void write_file(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw UsageError("cannot write " + file.string());
+  }
+  fs::rename(tmp, file);
+}
+
 std::string reference_name(const std::string& lab, const std::string& view) {
   return lab + "__" + view + ".png";
 }
@@ -164,28 +185,32 @@ int check_references(const Settings& s) {
   for (const std::string& lab : s.labs)
     for (const ViewEntry& view : views_of(s, lab)) {
       const std::string name = reference_name(lab, view.name);
-      if (view.expect_error) {
-        if (fs::exists(s.refs / name)) {
-          std::printf("reference for an error view (it exits 1, it has none): %s\n", (s.refs / name).c_str());
+      const std::string stem = lab + "__" + view.name;
+      // An error view: its line (.error), no image; any other: image and text.
+      const std::vector<std::string> files =
+          view.expect_error ? std::vector<std::string>{stem + ".error"} : std::vector<std::string>{name, stem + ".txt"};
+      if (view.expect_error && fs::exists(s.refs / name)) {
+        std::printf("reference image for an error view (it exits 1): %s\n", (s.refs / name).c_str());
+        ++problems;
+      }
+      for (const std::string& f : files) {
+        expected.insert(f);
+        if (!fs::exists(s.refs / f)) {
+          std::printf("missing reference: %s\n", (s.refs / f).c_str());
           ++problems;
         }
-        continue;
-      }
-      expected.insert(name);
-      if (!fs::exists(s.refs / name)) {
-        std::printf("missing reference: %s\n", (s.refs / name).c_str());
-        ++problems;
       }
     }
   if (s.labs == all_labs() && s.views.empty())
     for (const auto& entry : fs::directory_iterator(s.refs)) {
       const std::string name = entry.path().filename().string();
-      if (entry.path().extension() == ".png" && !expected.count(name)) {
+      const std::string ext = entry.path().extension().string();
+      if ((ext == ".png" || ext == ".txt" || ext == ".error") && !expected.count(name)) {
         std::printf("reference without a lab view: %s\n", entry.path().c_str());
         ++problems;
       }
     }
-  std::printf("%zu views, %d problem%s\n", expected.size(), problems, problems == 1 ? "" : "s");
+  std::printf("%zu reference files, %d problem%s\n", expected.size(), problems, problems == 1 ? "" : "s");
   return problems ? 1 : 0;
 }
 
@@ -208,32 +233,60 @@ int update_references(const Settings& s) {
     for (const ViewEntry& entry : views_of(s, lab)) {
       const std::string& view = entry.name;
       if (entry.expect_error) {
-        std::printf("skipped %s %s: an error view has no reference\n", lab.c_str(), view.c_str());
+        // Its reference is the one line it must refuse with.
+        const gllab::ProcessResult r =
+            gllab::run_process({renderer_of(s, lab).string(), "--view", view, "--out", "-"}, s.env);
+        if (r.exit_status != 1 || !r.out.empty())
+          throw UsageError(lab + " " + view + ": an error view must exit 1 and draw nothing (exit " +
+                           std::to_string(r.exit_status) + ")");
+        const fs::path target = s.refs / (lab + "__" + view + ".error");
+        write_file(target, gllab::first_line(r.err) + "\n");
+        std::printf("wrote %s\n", target.c_str());
         continue;
       }
       const fs::path target = s.refs / reference_name(lab, view);
+      const fs::path text = s.refs / (lab + "__" + view + ".txt");
       const gllab::ProcessResult r = gllab::run_process(
-          {renderer_of(s, lab).string(), "--view", view, "--out", target.string()}, s.env);
+          {renderer_of(s, lab).string(), "--view", view, "--out", target.string(), "--text-out", text.string()},
+          s.env);
       if (r.exit_status != 0) throw UsageError(lab + " " + view + ": " + gllab::first_line(r.err));
-      std::printf("wrote %s\n", target.c_str());
+      // --text-out's one section, "== VIEW N", becomes the N lines alone.
+      std::ifstream in(text, std::ios::binary);
+      std::string header, body;
+      std::getline(in, header);
+      for (std::string line; std::getline(in, line);) body += line + "\n";
+      in.close();
+      write_file(text, body);
+      std::printf("wrote %s and .txt\n", target.c_str());
       ++count;
     }
   }
   std::ofstream m(s.refs / "MANIFEST");
   m << "# reference_images/MANIFEST: how the reference images were made.\n"
     << "# Regenerate all of them with: make references\n"
-    << "# A pixel differs when a channel (R, G, B or A, 0..255) differs from the\n"
-    << "# reference by more than tolerance_channel_threshold. It is excused when a\n"
-    << "# shift of up to tolerance_shift_radius pixels explains it (lines drawn one\n"
-    << "# pixel over). A render passes when at most tolerance_max_differing_share of\n"
-    << "# its pixels differ unexcused.\n"
+    << "# Two profiles: build (labgrade --build: a student's build on this renderer)\n"
+    << "# and images (labgrade --images: renders made elsewhere). In each, a pixel\n"
+    << "# differs when a channel (R, G, B or A, 0..255) differs from the reference\n"
+    << "# by more than <profile>_channel_threshold. It is excused when a shift of up\n"
+    << "# to <profile>_shift_radius pixels explains it and it lies on a thin feature:\n"
+    << "# a neighbour differs from it by <profile>_edge_contrast or more (a line or\n"
+    << "# an edge moved, not a surface's colour changed). A render passes when at\n"
+    << "# most <profile>_max_unexcused_share of its pixels differ unexcused and at\n"
+    << "# most <profile>_max_shifted_share are excused. Its text (<view>.txt) must\n"
+    << "# agree: words exactly, numbers within text_relative_tolerance (and any two\n"
+    << "# under text_absolute_tolerance). An error view has <view>.error: its line.\n"
     << renderer_info
     << "mesa_package: libosmesa6 " << installed_version("libosmesa6") << "\n"
     << "glu_package: libglu1-mesa " << installed_version("libglu1-mesa") << "\n"
-    << "size: 512x512\n"
-    << "tolerance_channel_threshold: " << kDefaultChannelThreshold << "\n"
-    << "tolerance_shift_radius: " << kDefaultShiftRadius << "\n"
-    << "tolerance_max_differing_share: " << kDefaultMaxDifferingShare << "\n";
+    << "size: 512x512\n";
+  for (const ProfileLimits& p : kProfiles)
+    m << p.name << "_channel_threshold: " << p.channel_threshold << "\n"
+      << p.name << "_shift_radius: " << p.shift_radius << "\n"
+      << p.name << "_edge_contrast: " << p.edge_contrast << "\n"
+      << p.name << "_max_unexcused_share: " << p.max_unexcused_share << "\n"
+      << p.name << "_max_shifted_share: " << p.max_shifted_share << "\n";
+  m << "text_relative_tolerance: " << kTextRelative << "\n"
+    << "text_absolute_tolerance: " << kTextAbsolute << "\n";
   if (!m) throw UsageError("cannot write " + (s.refs / "MANIFEST").string());
   std::printf("%d reference images and MANIFEST written to %s\n", count, s.refs.c_str());
   return 0;

@@ -5,6 +5,7 @@
 // the report, results.json, results.csv and the class CSV say the same.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -60,6 +61,15 @@ void write_fake_renderer(const fs::path& path, const std::string& action) {
 std::string file_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A submitted image of lab 01's view `view` as `as`, with its text (the
+// headless --print-text lines), as a student's folder holds them.
+void submit_view(const fs::path& folder, const std::string& view, const std::string& as) {
+  fs::copy_file(kRefs / (kLab + "__" + view + ".png"), folder / (kLab + "__" + as + ".png"),
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(kRefs / (kLab + "__" + view + ".txt"), folder / (kLab + "__" + as + ".txt"),
+                fs::copy_options::overwrite_existing);
 }
 
 TEST(Labgrade, EveryViewOfThisBuildPassesItsReference) {
@@ -168,8 +178,7 @@ TEST(Labgrade, ABatchThatStopsEarlyGradesTheRestOneByOne) {
 
 TEST(Labgrade, ImageFolderIsGradedAndAWrongImageFails) {
   ScratchDir images("images");
-  for (const std::string v : {"default", "invalid_polygons", "vertex_order"})
-    fs::copy_file(kRefs / (kLab + "__" + v + ".png"), images / (kLab + "__" + v + ".png"));
+  for (const std::string v : {"default", "invalid_polygons", "vertex_order"}) submit_view(images.path(), v, v);
   // vertex_order replaced by another view's picture: it must fail; wireframe is missing.
   fs::copy_file(kRefs / (kLab + "__default.png"), images / (kLab + "__vertex_order.png"),
                 fs::copy_options::overwrite_existing);
@@ -196,7 +205,7 @@ TEST(Labgrade, ProgressNamesEveryViewAsItFinishes) {
 
 TEST(Labgrade, ReportHasEveryViewFailuresFirstAndAgreesWithJsonAndCsv) {
   ScratchDir images("images"), report("report");
-  for (const std::string& v : kViews) fs::copy_file(kRefs / (kLab + "__" + v + ".png"), images / (kLab + "__" + v + ".png"));
+  for (const std::string& v : kViews) submit_view(images.path(), v, v);
   fs::copy_file(kRefs / (kLab + "__default.png"), images / (kLab + "__wireframe.png"), fs::copy_options::overwrite_existing);
   const gllab::ProcessResult r = grade({"--images", images.path().string(), "--labs", "01", "--report",
                                         report.path().string(), "--quiet"});
@@ -208,12 +217,14 @@ TEST(Labgrade, ReportHasEveryViewFailuresFirstAndAgreesWithJsonAndCsv) {
   ASSERT_EQ(json["results"].size(), 4u);
   EXPECT_EQ(json["results"][0]["view"], "wireframe");  // the failure first
   EXPECT_EQ(json["results"][0]["result"], "fail");
-  EXPECT_GT(json["results"][0]["metric"].get<double>(), json["results"][0]["limit"].get<double>());
-  for (int i = 1; i < 4; ++i) EXPECT_EQ(json["results"][i]["metric"], 0.0);
+  EXPECT_EQ(json["profile"], "images");
+  EXPECT_GT(json["results"][0]["score"].get<double>(), 1.0);  // in units of the limit
+  for (int i = 1; i < 4; ++i) EXPECT_EQ(json["results"][i]["score"], 0.0);
 
   const std::string csv = file_text(report / "results.csv");
   EXPECT_EQ(line_count(csv), 5) << csv;
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "lab,view,result,metric,limit,differing_share,unexcused_pixels,max_delta,reason");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "lab,view,result,score,differing_share,unexcused_pixels,shifted_pixels,max_delta,reason");
   EXPECT_NE(csv.find("\n" + kLab + ",wireframe,fail,"), std::string::npos) << csv;
 
   const std::string html = file_text(report / "index.html");
@@ -250,8 +261,8 @@ TEST(Labgrade, ClassCsvHasARowPerStudentAndAColumnPerLab) {
   fs::create_directories(klass / "ben");
   fs::create_directories(klass / "carl");
   for (const std::string& v : kViews) {
-    fs::copy_file(kRefs / (kLab + "__" + v + ".png"), klass / "anna" / (kLab + "__" + v + ".png"));
-    if (v != "wireframe") fs::copy_file(kRefs / (kLab + "__" + v + ".png"), klass / "ben" / (kLab + "__" + v + ".png"));
+    submit_view(klass / "anna", v, v);
+    if (v != "wireframe") submit_view(klass / "ben", v, v);
   }
   write_fake_renderer(klass / "carl" / (kLab + "_headless"), "exec " + (kBinDir / (kLab + "_headless")).string() + " \"$@\"");
   const fs::path csv = klass / "grades.csv";
@@ -263,6 +274,119 @@ TEST(Labgrade, ClassCsvHasARowPerStudentAndAColumnPerLab) {
             "anna,images,4,4,100.0,100.0\n"
             "ben,images,4,3,75.0,75.0\n"
             "carl,build,4,4,100.0,100.0\n");
+}
+
+// ---- the text a view draws, error views, profiles ------------------------------
+
+// One line of a submitted text file changed.
+void edit_text(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string text = file_text(file);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+  text.replace(at, from.size(), to);
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+TEST(Labgrade, AWrongNumberInAViewsTextFailsItWithTheLine) {
+  ScratchDir images("images");
+  for (const std::string& v : kViews) submit_view(images.path(), v, v);
+  const std::string line = file_text(kRefs / (kLab + "__vertex_order.txt")).substr(0, 200);
+  // The picture is right; a number in its text is one off (the first digit run).
+  const auto digit = line.find_first_of("0123456789");
+  ASSERT_NE(digit, std::string::npos) << "lab 01's vertex_order draws no number: " << line;
+  const std::string from = line.substr(digit, 1), to = from == "9" ? "8" : std::string(1, char(from[0] + 1));
+  edit_text(images / (kLab + "__vertex_order.txt"), line.substr(0, digit + 1), line.substr(0, digit) + to);
+  const gllab::ProcessResult r = grade({"--images", images.path().string(), "--labs", "01", "--out", (images / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  const std::string row = row_of(r.out, "vertex_order");
+  EXPECT_NE(row.find("text differs: line "), std::string::npos) << row;
+  EXPECT_NE(row.find("the reference \""), std::string::npos) << row;
+  EXPECT_NE(r.out.find("4 views: 3 passed, 1 failed"), std::string::npos) << r.out;
+}
+
+TEST(Labgrade, MissingTextOrAChangedWordFailsAView) {
+  ScratchDir images("images");
+  for (const std::string& v : kViews) submit_view(images.path(), v, v);
+  fs::remove(images / (kLab + "__default.txt"));
+  // A word changed: the first letter of the wireframe text's first line upper-cased or lowered.
+  std::string text = file_text(images / (kLab + "__wireframe.txt"));
+  const auto letter = text.find_first_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ");
+  ASSERT_NE(letter, std::string::npos);
+  text[letter] = static_cast<char>(std::isupper(static_cast<unsigned char>(text[letter])) ? std::tolower(text[letter])
+                                                                                           : std::toupper(text[letter]));
+  std::ofstream(images / (kLab + "__wireframe.txt"), std::ios::binary) << text;
+  const gllab::ProcessResult r = grade({"--images", images.path().string(), "--labs", "01", "--out", (images / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
+  EXPECT_NE(row_of(r.out, "default").find("text differs: no text from the render"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "wireframe").find("text differs: line 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 views: 2 passed, 2 failed"), std::string::npos) << r.out;
+}
+
+TEST(Labgrade, NumbersAgreeWithinTheRelativeToleranceAndRoundingNoiseIsNoise) {
+  ScratchDir refs("refs"), images("images");
+  fs::copy_file(kRefs / "MANIFEST", refs / "MANIFEST");
+  fs::copy_file(kRefs / (kLab + "__default.png"), refs / (kLab + "__default.png"));
+  submit_view(images.path(), "default", "default");
+  // MANIFEST: text_relative_tolerance 1e-06, text_absolute_tolerance 1e-09.
+  std::ofstream(refs / (kLab + "__default.txt")) << "area 12.5 cm\nerror 3e-17\nn = 10\n";
+  std::ofstream(images / (kLab + "__default.txt")) << "area 12.500001 cm\nerror -4.4e-16\nn = 10\n";
+  const std::vector<std::string> args = {"--images", images.path().string(), "--refs", refs.path().string(), "--quiet"};
+  gllab::ProcessResult r = grade(args);
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  std::ofstream(images / (kLab + "__default.txt")) << "area 12.5 cm\nerror 3e-17\nn = 11\n";
+  r = grade(args);
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
+  std::ofstream(images / (kLab + "__default.txt")) << "area 12.50002 cm\nerror 3e-17\nn = 10\n";
+  r = grade(args);
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
+}
+
+TEST(Labgrade, AnErrorViewPassesABuildOnlyWhenItExitsOneWithItsLine) {
+  const std::string lab = "22_trimmed_nurbs", view = "reversed_outer_loop";
+  const std::string expected = file_text(kRefs / (lab + "__" + view + ".error"));
+  ASSERT_FALSE(expected.empty());
+  gllab::ProcessResult r = grade({"--build", kBinDir.string(), "--labs", "22", "--views", view});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 views: 1 passed"), std::string::npos) << r.out;
+  // A renderer that draws the default view instead, and one that refuses with another line.
+  ScratchDir draws("draws"), other("other");
+  const std::string real = (kBinDir / (lab + "_headless")).string();
+  write_fake_renderer(draws / (lab + "_headless"), "exec " + real + " --view default --out -");
+  write_fake_renderer(other / (lab + "_headless"), "echo 'something else' >&2; exit 1");
+  r = grade({"--build", draws.path().string(), "--labs", "22", "--views", view, "--out", (draws / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
+  EXPECT_NE(r.out.find("drew a picture; it must exit 1"), std::string::npos) << r.out;
+  r = grade({"--build", other.path().string(), "--labs", "22", "--views", view, "--out", (other / "out").string()});
+  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
+  EXPECT_NE(r.out.find("exit 1 with \"something else\", the reference"), std::string::npos) << r.out;
+  // Images cannot show an exit: the error view is left out, and said so.
+  ScratchDir images("images");
+  for (const auto& entry : fs::directory_iterator(kRefs))
+    if (entry.path().filename().string().rfind(lab + "__", 0) == 0 && entry.path().extension() != ".error")
+      fs::copy_file(entry.path(), images / entry.path().filename());
+  r = grade({"--images", images.path().string(), "--labs", "22"});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 error view not graded: a folder of images cannot show an exit status"), std::string::npos)
+      << r.out;
+}
+
+TEST(Labgrade, TheProfileFollowsTheSourceUnlessGiven) {
+  ScratchDir report("report");
+  ASSERT_EQ(grade({"--build", kBinDir.string(), "--labs", "01", "--views", "default", "--report", report.path().string(),
+                   "--quiet"}).exit_status, 0);
+  EXPECT_EQ(nlohmann::json::parse(file_text(report / "results.json"))["profile"], "build");
+  ASSERT_EQ(grade({"--build", kBinDir.string(), "--labs", "01", "--views", "default", "--profile", "images",
+                   "--report", report.path().string(), "--quiet"}).exit_status, 0);
+  const nlohmann::json j = nlohmann::json::parse(file_text(report / "results.json"));
+  EXPECT_EQ(j["profile"], "images");
+  const std::string manifest = file_text(kRefs / "MANIFEST");
+  const auto at = manifest.find("images_channel_threshold: ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(j["tolerance"]["channel_threshold"], std::stoi(manifest.substr(at + 26)));
+  const gllab::ProcessResult r = grade({"--build", kBinDir.string(), "--profile", "strict"});
+  EXPECT_EQ(r.exit_status, kUsage);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("unknown profile 'strict' (profiles: build, images)"), std::string::npos) << r.err;
 }
 
 }  // namespace

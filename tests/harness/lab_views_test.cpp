@@ -120,6 +120,8 @@ TEST_P(EveryErrorView, ExitsOneWithOneErrorLineAndNoImage) {
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_FALSE(std::filesystem::exists(kSourceDir / "reference_images" /
                                        (GetParam().lab + "__" + GetParam().view + ".png")));
+  // Its reference is that line (labgrade --build grades it: tools/grading.h).
+  EXPECT_EQ(file_bytes(kSourceDir / "reference_images" / (GetParam().lab + "__" + GetParam().view + ".error")), r.err);
 }
 
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(EveryErrorView);

@@ -4,7 +4,8 @@
 // The fixture lab (fixture_lab.cpp) draws lit polygons, lines, points and
 // text; its `mistake` parameter reproduces a wrong colour, a missing
 // primitive and a vertex moved by 1% of the frame. Its llvmpipe render is the
-// reference; each case is judged with the MANIFEST tolerance, as labgrade does.
+// reference; each case is judged with the MANIFEST's images profile (the one
+// for a foreign renderer such as softpipe), as labgrade --images does.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -28,9 +29,11 @@ gllab::Tolerance manifest_tolerance() {
     m[line.substr(0, colon)] = line.substr(colon + 2);
   }
   gllab::Tolerance t;
-  t.channel_threshold = std::stoi(m.at("tolerance_channel_threshold"));
-  t.max_differing_share = std::stod(m.at("tolerance_max_differing_share"));
-  t.shift_radius = std::stoi(m.at("tolerance_shift_radius"));
+  t.channel_threshold = std::stoi(m.at("images_channel_threshold"));
+  t.max_differing_share = std::stod(m.at("images_max_unexcused_share"));
+  t.shift_radius = std::stoi(m.at("images_shift_radius"));
+  t.edge_contrast = std::stoi(m.at("images_edge_contrast"));
+  t.max_shifted_share = std::stod(m.at("images_max_shifted_share"));
   return t;
 }
 
@@ -50,7 +53,7 @@ class Tolerance : public ::testing::Test {
  protected:
   void SetUp() override { reference_ = render_fixture(dir_, "reference.png", {}); }
   gllab::Comparison judge(const gllab::Image& image) const {
-    return gllab::compare_images(reference_, image, tolerance_.channel_threshold, tolerance_.shift_radius);
+    return gllab::compare_images(reference_, image, tolerance_);
   }
   ScratchDir dir_{"tolerance"};
   gllab::Tolerance tolerance_ = manifest_tolerance();
