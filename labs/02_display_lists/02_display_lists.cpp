@@ -34,10 +34,10 @@ constexpr float kAdvance = 1.5f;  // each shape list ends with glTranslatef(kAdv
 // The row glCallLists draws: offsets added to glListBase, one byte each.
 const GLubyte kRow[] = {0, 1, 2, 3, 2, 1, 0};
 const gllab::Rgb kLabel{1.f, 1.f, 1.f}, kDim{0.6f, 0.62f, 0.68f};
-// The lists: names from glGenLists, made in init() (shapes, torus), the torus
-// compiled again when its detail changes. None is made per frame.
-GLuint g_shapes = 0, g_torus = 0;     // kShapes lists are g_shapes + 0, + 1, ...; the torus
-int g_torus_detail = kDefaultDetail;  // the detail g_torus was compiled with
+// The lists: names from glGenLists in init(); the shapes made there, the torus
+// at its first call and again when its detail changes. None is made per frame.
+GLuint g_shapes = 0, g_torus = 0;  // kShapes lists are g_shapes + 0, + 1, ...; the torus
+int g_torus_detail = 0;            // the detail g_torus was compiled with (0: not yet)
 
 // Drawing -------------------------------------------------------------------
 // Vertex (i, j): ring i of `rings` around z, side j of `sides` around the tube.
@@ -67,8 +67,8 @@ void call_torus_list(int detail) {
     glCallList(g_torus);
     return;
   }
-  // The data changed: the list is stale. Release its name first; a new list
-  // without glDeleteLists leaks one list per change.
+  // Not made yet, or the data changed and the list is stale. Release its name
+  // first; a new list without glDeleteLists leaks one list per change.
   glDeleteLists(g_torus, 1);
   g_torus = glGenLists(1), g_torus_detail = detail;
   // GL_COMPILE_AND_EXECUTE records and draws at once: this frame needs it too.
@@ -172,10 +172,7 @@ void init() {
   // One contiguous block of names: g_shapes, g_shapes + 1, ... for glCallLists.
   g_shapes = glGenLists(static_cast<GLsizei>(std::size(kShapes)));
   for (std::size_t i = 0; i < std::size(kShapes); ++i) compile_shape(g_shapes + i, kShapes[i]);
-  g_torus = glGenLists(1);
-  glNewList(g_torus, GL_COMPILE);
-  draw_torus_immediate(g_torus_detail);
-  glEndList();
+  g_torus = glGenLists(1);  // a name only: call_torus_list records it when first drawn
   if (g_shapes == 0 || g_torus == 0) gllab::report_frame_error("glGenLists returned 0");
 }
 
