@@ -13,20 +13,23 @@
 #   make references  re-render reference_images/ and reference_images/MANIFEST
 #   make calibration re-measure the grading metric, rewrite README's numbers
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
+#   make clang       build in build-clang/ with clang -O0 (Debug) and run the tests;
+#                    its renders are graded against the GCC-built references there
 #   make bench       build bench/ in build-bench/ (Release, GLLAB_BENCH=ON) and run
 #                    spline_bench against GLU, SISL and OpenCASCADE, then
 #                    submission_bench (lab 05's four paths, Mtri/s and ratios),
 #                    then grade_bench (labgrade over every view: wall seconds);
 #                    flags for spline_bench go in BENCH_ARGS, e.g.
 #                    make bench BENCH_ARGS=--benchmark_filter=curve
-#   make clean       remove build/, build-sanitize/, build-bench/ and out/
+#   make clean       remove build/, build-sanitize/, build-clang/, build-bench/ and out/
 
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
+CLANG_BUILD ?= build-clang
 BENCH_BUILD ?= build-bench
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build target run grade test references calibration sanitize bench clean
+.PHONY: all build target run grade test references calibration sanitize clang bench clean
 
 all: build
 
@@ -59,12 +62,21 @@ calibration: build
 
 # LeakSanitizer: only OSMesa's known per-context leak is suppressed.
 sanitize:
-	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLLAB_SANITIZE=ON
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLLAB_SANITIZE=ON -DGLLAB_GRADING_FIXTURES=OFF
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/.ci/lsan.supp:print_suppressions=0 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS)
+
+# The second compiler, at -O0: the same tests (the grading calibration aside:
+# CMakeLists.txt, GLLAB_GRADING_FIXTURES), and every view graded in the build
+# profile against the references GCC -O2 made (a benign build).
+clang:
+	cmake -S . -B $(CLANG_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DGLLAB_GRADING_FIXTURES=OFF
+	cmake --build $(CLANG_BUILD) -j $(JOBS)
+	ctest --test-dir $(CLANG_BUILD) --output-on-failure -j $(JOBS)
 
 # A separate build directory: the normal build never needs the peers (bench/README.md).
 bench:
@@ -75,4 +87,4 @@ bench:
 	$(BENCH_BUILD)/bin/grade_bench $(GRADE_BENCH_ARGS)
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(BENCH_BUILD) out
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(CLANG_BUILD) $(BENCH_BUILD) out
