@@ -231,6 +231,14 @@ std::string html_escape(const std::string& s) {
 }
 
 void write_text(const fs::path& file, const std::string& text) {
+  std::error_code ec;
+  // --csv /dev/stdout: write into it; a rename would replace the device.
+  if (fs::exists(file, ec) && !fs::is_regular_file(file, ec) && !fs::is_directory(file, ec)) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw UsageError("cannot write " + file.string());
+    return;
+  }
   const fs::path tmp = file.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);

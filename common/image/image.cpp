@@ -18,6 +18,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 namespace gllab {
@@ -32,7 +33,7 @@ constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 28;
 
 // 'path' for an error message. Control characters become '?' so that the
 // message stays on one line whatever the file is called.
-std::string quoted(const std::string& path) {
+std::string quote(const std::string& path) {
   std::string out = "'";
   for (char c : path) {
     const bool control = static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
@@ -253,7 +254,7 @@ Image image_from_bottom_up(const std::uint8_t* rgba, int width, int height) {
 
 // --- read_png ------------------------------------------------------------------
 Image read_png(const std::string& path) {
-  const std::string where = "read_png: " + quoted(path) + ": ";
+  const std::string where = "read_png: " + quote(path) + ": ";
   const std::vector<std::uint8_t> bytes = read_file(path, where);
 
   // Every PNG starts with the same 8-byte signature (\x89PNG\r\n\x1a\n).
@@ -290,21 +291,30 @@ Image read_png(const std::string& path) {
 
 // --- write_png -------------------------------------------------------------------
 void write_png(const std::string& path, const Image& img, int zlib_level) {
-  const std::string where = "write_png: " + quoted(path) + ": ";
+  const std::string where = "write_png: " + quote(path) + ": ";
   if (zlib_level < 0 || zlib_level > 9)
     throw std::invalid_argument(where + "zlib_level " + std::to_string(zlib_level) +
                                 " is outside 0..9");
   check_image(img, where);
 
-  // Write next to the target (same directory, so rename() is atomic), then rename.
+  // Write next to the target (same directory, so rename() is atomic), then
+  // rename; through a symlink, next to the file it names. A path that names
+  // no regular file (/dev/null, a FIFO, /dev/stdout) is written in place:
+  // a rename would replace the device itself.
+  std::error_code ec;
+  std::string target = path;
+  if (std::filesystem::exists(path, ec)) target = std::filesystem::canonical(path, ec).string();
+  if (ec) target = path;
+  const bool in_place = std::filesystem::exists(target, ec) && !std::filesystem::is_regular_file(target, ec) &&
+                        !std::filesystem::is_directory(target, ec);
   TemporaryFile tmp;
-  tmp.path = path + ".tmp." + std::to_string(::getpid());
+  tmp.path = in_place ? target : target + ".tmp." + std::to_string(::getpid());
   tmp.file = std::fopen(tmp.path.c_str(), "wb");
   if (tmp.file == nullptr) {
     const int err = errno;
     throw ImageError(where + "cannot open for writing: " + std::strerror(err));
   }
-  tmp.created = true;
+  tmp.created = !in_place;
 
   PngEncoder e;
   e.file = tmp.file;
@@ -329,9 +339,10 @@ void write_png(const std::string& path, const Image& img, int zlib_level) {
   tmp.file = nullptr;
   if (!flushed || !closed) throw ImageError(where + "write failed: " + std::strerror(err));
 
-  if (std::rename(tmp.path.c_str(), path.c_str()) != 0) {
+  if (in_place) return;
+  if (std::rename(tmp.path.c_str(), target.c_str()) != 0) {
     err = errno;
-    throw ImageError(where + "cannot rename " + quoted(tmp.path) + " into place: " +
+    throw ImageError(where + "cannot rename " + quote(tmp.path) + " into place: " +
                      std::strerror(err));
   }
   tmp.keep = true;

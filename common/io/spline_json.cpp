@@ -766,19 +766,34 @@ std::string to_text(const Json& value) {
 
 std::string to_text(const SplineFile& spline) { return to_text(to_json(spline)); }
 
-void write_text_atomically(const std::filesystem::path& file, const std::string& text) {
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+  // Through a symlink, the file it names is replaced. A path that names no
+  // regular file (/dev/null, a FIFO, /dev/stdout) is written in place: a
+  // rename would replace the device itself.
+  std::error_code status;
+  std::filesystem::path file = path;
+  if (std::filesystem::exists(path, status)) file = std::filesystem::canonical(path, status);
+  if (status) file = path;
+  if (std::filesystem::exists(file, status) && !std::filesystem::is_regular_file(file, status) &&
+      !std::filesystem::is_directory(file, status)) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw FileError(path.string(), "", std::string("cannot write (") + std::strerror(errno) + ")");
+    return;
+  }
   const std::filesystem::path tmp =
       file.parent_path() / ("." + file.filename().string() + ".tmp-" + std::to_string(getpid()));
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw FileError(file.string(), "", std::string("cannot write (") + std::strerror(errno) + ")");
+    if (!out) throw FileError(path.string(), "", std::string("cannot write (") + std::strerror(errno) + ")");
     out << text;
     out.close();  // a full disk may only show here
     if (!out) {
       const int error = errno;
       std::error_code ignored;
       std::filesystem::remove(tmp, ignored);
-      throw FileError(file.string(), "", std::string("cannot write (") + std::strerror(error) + ")");
+      throw FileError(path.string(), "", std::string("cannot write (") + std::strerror(error) + ")");
     }
   }
   std::error_code ec;
@@ -786,7 +801,7 @@ void write_text_atomically(const std::filesystem::path& file, const std::string&
   if (ec) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
-    throw FileError(file.string(), "", "cannot replace (" + ec.message() + ")");
+    throw FileError(path.string(), "", "cannot replace (" + ec.message() + ")");
   }
 }
 

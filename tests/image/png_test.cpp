@@ -23,6 +23,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -571,6 +572,34 @@ TEST_F(PngFiles, BadArgumentsThrowInvalidArgumentAndWriteNothing) {
   short_rgba.rgba.pop_back();  // 15 bytes for a 2x2 image
   EXPECT_THROW(gllab::write_png(path("a.png"), short_rgba), std::invalid_argument);
   EXPECT_TRUE(listing(dir_).empty());
+}
+
+// A FIFO (like /dev/null or /dev/stdout, not a regular file) is written into,
+// never replaced: renaming a temporary file over it would replace the device.
+TEST_F(PngFiles, WriteIntoAFifoWritesThroughItAndKeepsIt) {
+  const std::string fifo = path("pipe.png");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    received.assign(std::istreambuf_iterator<char>(in), {});
+  });
+  const gllab::Image img = random_image(3, 2, 7);
+  gllab::write_png(fifo, img);
+  reader.join();
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "write_png replaced the FIFO with a file";
+  EXPECT_EQ(listing(dir_), std::vector<std::string>{"pipe.png"});
+  ASSERT_GT(received.size(), 8u);
+  EXPECT_EQ(received.substr(1, 3), "PNG");
+}
+
+TEST_F(PngFiles, WriteThroughASymlinkReplacesTheFileItNames) {
+  const gllab::Image first = random_image(2, 2, 1), second = random_image(2, 2, 2);
+  gllab::write_png(path("real.png"), first);
+  fs::create_symlink(path("real.png"), path("link.png"));
+  gllab::write_png(path("link.png"), second);
+  EXPECT_TRUE(fs::is_symlink(path("link.png")));
+  EXPECT_EQ(gllab::read_png(path("real.png")).rgba, second.rgba);
 }
 
 }  // namespace

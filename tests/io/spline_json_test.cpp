@@ -2,16 +2,19 @@
 // every bad file of tests/io/bad/ gives one line naming its JSON path, and
 // every file of examples/ round-trips bit-exactly.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/spline_json.h"
@@ -387,6 +390,33 @@ TEST(Write, ReplacesTheFileAndLeavesNoTemporaryFile) {
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++entries;
   EXPECT_EQ(entries, 1);
+}
+
+// A FIFO (like /dev/null or /dev/stdout, not a regular file) is written into,
+// never replaced: renaming a temporary file over it would replace the device.
+TEST(Write, IntoAFifoWritesThroughItAndKeepsIt) {
+  ScratchDir dir("fifo");
+  const fs::path fifo = dir / "pipe.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    received.assign(std::istreambuf_iterator<char>(in), {});
+  });
+  gllab::io::write_text_atomically(fifo, "{\"kind\": 1}\n");
+  reader.join();
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "replaced the FIFO with a file";
+  EXPECT_EQ(received, "{\"kind\": 1}\n");
+}
+
+TEST(Write, ThroughASymlinkReplacesTheFileItNames) {
+  ScratchDir dir("link");
+  gllab::io::write_text_atomically(dir / "real.txt", "one\n");
+  fs::create_symlink(dir / "real.txt", dir / "link.txt");
+  gllab::io::write_text_atomically(dir / "link.txt", "two\n");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
+  std::ifstream in(dir / "real.txt");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "two\n");
 }
 
 TEST(Write, UnwritableDirectoryNamesTheFile) {
