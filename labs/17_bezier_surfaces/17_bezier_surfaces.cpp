@@ -5,12 +5,14 @@
 // normals Xu x Xv, zero and constant twist. Lab 18 joins a second patch to it, lab 19 hands it
 // to OpenGL's evaluator (glMap2f).
 // Notice: the inner net points set the corner twists, 9 (b11 - b10 - b01 + b00);
-//   with zero twist every v-tangent along an edge is the same vector.
-// Try: in de_casteljau press [f]: which nets change, and which points do not?
-//   In constant_twist, drag b33 until Xuv = 0: which view do you get?
-// Keys: [s]/[S] u  [t]/[T] v  [f] u or v first  [m] normals  [c] nets  [n] labels
+//   with zero twist every v-tangent along an edge is the same vector. Seen from
+//   below, the underside is lit with -N (GL_LIGHT_MODEL_TWO_SIDE).
+// Try: de_casteljau, then [v] to de_casteljau_v_first: which nets change, and
+//   which points do not? In constant_twist, drag b33 until Xuv = 0: which view?
+// Keys: [s]/[S] u  [t]/[T] v  [m] normals  [c] nets  [n] labels
 //   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
-// Views: de_casteljau, iso_lines_normals, zero_twist, constant_twist
+// Views: de_casteljau, de_casteljau_v_first, iso_lines_normals (from below),
+//   zero_twist, constant_twist
 // Reference: reference_images/17_bezier_surfaces__*.png
 
 #include <cmath>
@@ -76,14 +78,16 @@ std::string vec(const std::string& name, Vec3 p) {
   return name + format_text(" (%.2f, %.2f, %.2f)", r(p.x), r(p.y), r(p.z));
 }
 
-// One light that stays with the eye; both sides lit (we see under the patch).
-void camera(const State& s) {
+// One light that stays with the eye; both sides lit: the back of a polygon
+// with -N, so the underside is lit as the light falls on it (seen from below
+// in iso_lines_normals, elevation < 0).
+void camera(const State& s, double elevation = 25) {
   gllab::ortho_fit(s.width, s.height, 2.4, 2.4);
   gllab::enable_headlight();
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   gllab::apply_orbit(s);     // right-drag, wheel, [0]: s.camera
   glTranslated(0, -0.3, 0);  // below the text panel
-  gllab::look_from_above(25, 30);
+  gllab::look_from_above(elevation, 30);
   glScaled(kSize, kSize, kSize);
 }
 
@@ -100,10 +104,9 @@ void draw_net(const State& s, const BezierSurface& p, const std::vector<std::siz
 
 // The notes' scheme at (u, v) (u first): one Bézier curve per column of the net, evaluated at u
 // (the nets b^{k,0}, dim); their points b^{3,0}_j are the control polygon of the surface curve v ->
-// X(u, v) (green), evaluated at v (b^{3,l}, cyan). [f] runs v first: rows instead of columns.
-void draw_scheme(const State& s) {
+// X(u, v) (green), evaluated at v (b^{3,l}, cyan). v first: rows instead of columns.
+void draw_scheme(const State& s, bool u_first) {
   const BezierSurface p = patch_of(s);
-  const bool u_first = s.get("first") == 0;
   const double u = s.get("u"), v = s.get("v");
   const sp::BezierSurfaceConstruction c =
       sp::de_casteljau(p, u, v, u_first ? sp::SurfaceDirection::U : sp::SurfaceDirection::V);
@@ -125,14 +128,20 @@ void draw_scheme(const State& s) {
                       : "v first: each row at v, then the green polygon at u",
               vec("X(u, v) =", c.point) + format_text("  at u %.2f, v %.2f", u, v),
               vec("Xu/4 (red) =", 0.25 * c.partials.Su),
-              vec("Xv/4 (blue) =", 0.25 * c.partials.Sv)});
+              vec("Xv/4 (blue) =", 0.25 * c.partials.Sv),
+              "either order: X = sum_i sum_j B_i(u) B_j(v) b_ij"});
 }
 
+void draw_u_first(const State& s) { draw_scheme(s, true); }
+void draw_v_first(const State& s) { draw_scheme(s, false); }
+
 // Iso-parameter lines X(u_k, v), X(u, v_k) (core iso curves) and the unit
-// normals (Xu x Xv)/|Xu x Xv| as needles in the middle of each grid cell.
+// normals (Xu x Xv)/|Xu x Xv| as needles in the middle of each grid cell,
+// seen from 20 degrees below: the far part shows its top and the needles, the
+// near part its underside (the needles' feet).
 void draw_iso_lines_normals(const State& s) {
   const BezierSurface p = patch_of(s);
-  camera(s);
+  camera(s, -20);
   gllab::draw_surface(mesh_of(p), kClay);
   draw_net(s, p, kAll);
   const int lines = 8;  // intervals each way
@@ -149,7 +158,8 @@ void draw_iso_lines_normals(const State& s) {
   }
   gllab::draw_normal_needles(needles, 0.4, kText);
   caption(s, {format_text("green X(u_k, v), blue X(u, v_k): %d + 1 lines each way", lines),
-              "white: N = (Xu x Xv) / |Xu x Xv|"});
+              "white: N = (Xu x Xv) / |Xu x Xv|",
+              "from below: in front the underside, lit with -N"});
 }
 
 // The v-tangents Xv along the edge v = 0 and the corner twists.
@@ -191,9 +201,11 @@ gllab::Lab gllab::define_lab() {
   gllab::Lab lab{
       "17_bezier_surfaces",
       "lab 17 · Bézier surfaces",
-      {{"de_casteljau", "the surface de Casteljau scheme at (u, v), with Xu and Xv",
-        draw_scheme, kOrbit},
-       {"iso_lines_normals", "iso-parameter lines and normals Xu x Xv as needles",
+      {{"de_casteljau", "the surface de Casteljau scheme at (u, v), u first, with Xu and Xv",
+        draw_u_first, kOrbit},
+       {"de_casteljau_v_first", "the same scheme v first: other nets, the same point",
+        draw_v_first, kOrbit},
+       {"iso_lines_normals", "iso-parameter lines and normals Xu x Xv, from below",
         draw_iso_lines_normals, kOrbit},
        {"zero_twist", "the translational patch of two edges: Xuv = 0 everywhere",
         draw_zero_twist, kOrbit},
@@ -201,13 +213,11 @@ gllab::Lab gllab::define_lab() {
         draw_constant_twist, kOrbit}},
       {{"u", 0.45, 0, 1, "de Casteljau u (the notes' s)"},
        {"v", 0.3, 0, 1, "de Casteljau v (the notes' t)"},
-       {"first", 0, 0, 1, "de Casteljau: 0 steps along u first, 1 along v first"},
        {"normals", 1, 0, 1, "normal needles"},
        {"nets", 1, 0, 1, "control nets and draggable points"},
        {"labels", 1, 0, 1, "formulas and values"}},
       {{'s', "u +0.05", "u", +0.05}, {'S', "u -0.05", "u", -0.05},
        {'t', "v +0.05", "v", +0.05}, {'T', "v -0.05", "v", -0.05},
-       {'f', "de Casteljau: u first / v first", "first"},
        {'m', "normal needles on/off", "normals"}, {'c', "control nets on/off", "nets"},
        {'n', "labels on/off", "labels"}},
       init};

@@ -7,12 +7,13 @@
 // continued beyond u = 1, de Casteljau evaluated outside its interval.
 // Notice: row 0 is the shared edge; C1 makes a_3j - a_2j = b_1j - b_0j (each
 //   white line runs straight through the edge); C2 also fixes row 2.
+//   join_c1_below shows the underside, lit with -N (GL_LIGHT_MODEL_TWO_SIDE).
 // Try: in join_c1, drag a point of row 2 of the left patch: which points of
 //   the right patch follow, and why only those? In join_c2, drag b_1j: how far
 //   do row 2's points move compared with your drag?
 // Keys: [c] nets  [n] labels
 //   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
-// Views: join_c0, join_c1, join_c2
+// Views: join_c0, join_c1, join_c2, join_c1_below
 // Reference: reference_images/18_joining_patches__*.png
 
 #include <algorithm>
@@ -59,15 +60,16 @@ sp::Mesh mesh_of(const BezierSurface& p) {
 }
 
 // Drawing -------------------------------------------------------------------
-// Both patches in the middle, seen from above; one light that stays with the
-// eye, both sides lit (we see under the patches).
-void camera(const State& s) {
+// Both patches in the middle, seen from `elevation` degrees above (below when
+// negative); one light that stays with the eye, both sides lit: the back of a
+// polygon with -N, so the underside is lit as the light falls on it.
+void camera(const State& s, double elevation) {
   gllab::ortho_fit(s.width, s.height, 2.4, 2.4);
   gllab::enable_headlight();
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   gllab::apply_orbit(s);     // right-drag, wheel, [0]: s.camera
   glTranslated(0, -0.3, 0);  // below the text panel
-  gllab::look_from_above(25, 30);
+  gllab::look_from_above(elevation, 30);
   glScaled(0.62, 0.62, 0.62);
   glTranslated(-1.5, 0, 0);
 }
@@ -75,12 +77,12 @@ void camera(const State& s) {
 // join_ck: the neighbour's rows 0..k continue the left patch's columns (core
 // joined_patch), its other rows are the list Q. The construction lines: each
 // column's Bézier curve continued beyond u = 1 (de Casteljau at tau = 2).
-void draw_join(const State& s, int k) {
+void draw_join(const State& s, int k, double elevation = 25) {
   const BezierSurface a{3, 3, s.points("P")};
   BezierSurface b = a;  // row 0: any, joined_patch replaces it
   std::copy(s.points("Q").begin(), s.points("Q").end(), b.P.begin() + 4);
   b = sp::joined_patch(a, {3, 3, b.P, 1, 2}, k);  // b over [1, 2] x [0, 1]
-  camera(s);
+  camera(s, elevation);
   gllab::draw_surface(mesh_of(a), kClay);
   gllab::draw_surface(mesh_of(b), kSea);
   if (s.flag("nets")) {
@@ -104,12 +106,15 @@ void draw_join(const State& s, int k) {
   if (!s.flag("labels")) return;
   const std::string made =
       gllab::format_text("C%d: blue rows 0..%d made from the orange patch", k, k);
-  gllab::draw_text_panel(8, 8, {made, "(each column continued beyond u = 1)"}, kText);
+  std::vector<std::string> lines = {made, "(each column continued beyond u = 1)"};
+  if (elevation < 0) lines.push_back("from below: the underside, lit with -N");
+  gllab::draw_text_panel(8, 8, lines, kText);
 }
 
 void draw_c0(const State& s) { draw_join(s, 0); }
 void draw_c1(const State& s) { draw_join(s, 1); }
 void draw_c2(const State& s) { draw_join(s, 2); }
+void draw_c1_below(const State& s) { draw_join(s, 1, -60); }  // 60 degrees below
 
 // init ----------------------------------------------------------------------
 void init() {
@@ -125,7 +130,9 @@ gllab::Lab gllab::define_lab() {
                  "lab 18 · joining Bézier patches",
                  {{"join_c0", "a second patch sharing the edge only", draw_c0, kOrbit},
                   {"join_c1", "its row 1 continued: C1", draw_c1, kOrbit},
-                  {"join_c2", "rows 1 and 2 continued: C2", draw_c2, kOrbit}},
+                  {"join_c2", "rows 1 and 2 continued: C2", draw_c2, kOrbit},
+                  {"join_c1_below", "the C1 join from below: the underside lit", draw_c1_below,
+                   kOrbit}},
                  {{"nets", 1, 0, 1, "control nets, construction lines and draggable points"},
                   {"labels", 1, 0, 1, "the caption"}},
                  {{'c', "control nets on/off", "nets"}, {'n', "labels on/off", "labels"}},

@@ -6,11 +6,11 @@
 // Bezier Curves", "Rendering Bezier Patches"; ch. 1, §1.6 Spline representations, "Properties
 // of Bézier segments", property 5, the Bernstein basis).
 // Notice: glEvalMesh1 hits the core's points to the pixel: the same Bernstein
-//   form at the same parameters. Without GL_AUTO_NORMAL glEvalMesh2 sends no
-//   normals, and the patch is lit like a flat card.
-// Try: --set curve_grid=4: is GL's curve still the curve? In surface, press
-//   [M] down to 4 cells: where do the halves differ, and why there?
-// Keys: [g]/[G] curve grid  [c]/[C] curve source  [m]/[M] surface grid  [a] GL_AUTO_NORMAL
+//   form at the same parameters. glMapGrid2f(12, .., 6, ..) gives 12 cells along u
+//   and 6 along v; without GL_AUTO_NORMAL glEvalMesh2 sends no normals.
+// Try: --set curve_grid=4: is GL's curve still the curve? Swap glMap2f's strides
+//   (3 for u, 12 for v): what changes in surface, and what on 12 x 12 cells?
+// Keys: [g]/[G] curve grid  [c]/[C] curve source  [m]/[M] surface un  [a] GL_AUTO_NORMAL
 //   [n] labels  [mouse] drag  right-drag turn  wheel zoom  [0] reset camera  [h] help
 // Views: curve, surface
 // Reference: reference_images/19_gl_evaluators__*.png
@@ -50,7 +50,7 @@ const std::vector<Vec3> kPatch = {
     {1.5, -1.5, -.14},  {1.5, -.5, .84},  {1.5, .5, .84},  {1.5, 1.5, 1.26}};
 const Rgb kText{0.9f, 0.9f, 0.9f}, kOwn{0.3f, 0.8f, 1.f}, kPoints{1.f, 0.8f, 0.3f},
     kGl{1.f, 0.3f, 0.9f}, kClay{.85f, .55f, .35f}, kNet{.75f, .75f, .8f}, kFree{1.f, .9f, .3f},
-    kWhite{1.f, 1.f, 1.f};
+    kWhite{1.f, 1.f, 1.f}, kGrid{.4f, .22f, .1f};
 
 // The curve -------------------------------------------------------------------
 // OpenGL's one-dimensional evaluator: the driver evaluates the same Bernstein
@@ -115,27 +115,33 @@ void draw_curves(const State& s) {
 // The surface -----------------------------------------------------------------
 // OpenGL's two-dimensional evaluator (bezmesh.c): the 16 points as a map, a
 // grid, and normals from the map's derivatives when GL_AUTO_NORMAL is on.
-void gl_evaluator_surface(const State& s, int grid) {
+void gl_evaluator_surface(const State& s, int un, int vn) {
   const std::vector<GLfloat> ctrl = gllab::glu_points(s.points("B"));  // b_00, b_01, ..., b_33
   // u (index i) steps over a row of 4 points: stride 12 floats; v steps 3.
   glMap2f(GL_MAP2_VERTEX_3, 0.f, 1.f, 12, 4, 0.f, 1.f, 3, 4, ctrl.data());
   glEnable(GL_MAP2_VERTEX_3);
   if (s.flag("auto_normal")) glEnable(GL_AUTO_NORMAL);
-  glMapGrid2f(grid, 0.f, 1.f, grid, 0.f, 1.f);
+  glMapGrid2f(un, 0.f, 1.f, vn, 0.f, 1.f);  // un cells along u, vn along v
+  glPolygonOffset(2.f, 4.f);  // with the grid lines, the fill a little deeper: lines in front
+  if (s.flag("grid_lines")) glEnable(GL_POLYGON_OFFSET_FILL);
   // Its strips run clockwise in (u, v) while Xu x Xv points up: tell GL which
   // side is the front, or two-sided lighting lights the back.
   glFrontFace(GL_CW);
-  glEvalMesh2(GL_FILL, 0, grid, 0, grid);
+  glEvalMesh2(GL_FILL, 0, un, 0, vn);
   glFrontFace(GL_CCW);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_LIGHTING);  // the same grid as lines: u = i / un, i = 0..un, and v = j / vn
+  glColor3f(kGrid.r, kGrid.g, kGrid.b);
+  if (s.flag("grid_lines")) glEvalMesh2(GL_LINE, 0, un, 0, vn);
   glDisable(GL_AUTO_NORMAL);
   glDisable(GL_MAP2_VERTEX_3);
 }
 
-// Left: the core's tessellation on a grid x grid; right: glEvalMesh2 on the
+// Left: the core's tessellation on un x vn cells; right: glEvalMesh2 on the
 // same grid. Each in its own half of the window, under the same matrices.
 void draw_patches(const State& s) {
   const sp::BezierSurface p{3, 3, s.points("B")};
-  const int grid = s.integer("surface_grid"), half = s.width / 2;
+  const int un = s.integer("surface_un"), vn = s.integer("surface_vn"), half = s.width / 2;
   glEnable(GL_DEPTH_TEST);
   for (int side = 0; side < 2; ++side) {
     glViewport(side * half, 0, half, s.height);
@@ -145,19 +151,16 @@ void draw_patches(const State& s) {
     gllab::apply_orbit(s);  // right-drag, wheel, [0]: s.camera
     gllab::look_from_above(25, 30);
     glColor3f(kClay.r, kClay.g, kClay.b);
-    if (side == 1) {
-      gl_evaluator_surface(s, grid);
-      continue;
-    }
-    gllab::draw_mesh(sp::tessellate_surface(sp::surface_evaluator(p), sp::uv_domain(p),
-                                            sp::TessellationOptions::fixed_steps(grid, grid)));
-    if (!s.flag("nets")) continue;
+    if (side == 1) gl_evaluator_surface(s, un, vn);
+    else gllab::draw_mesh(sp::tessellate_surface(sp::surface_evaluator(p), sp::uv_domain(p),
+                                                 sp::TessellationOptions::fixed_steps(un, vn)));
+    if (side == 1 || !s.flag("nets")) continue;
     gllab::draw_control_net(p.P, 4, 4, kNet);
     gllab::draw_control_points(s, "B", kFree);
   }
   glViewport(0, 0, s.width, s.height);
   if (!s.flag("labels")) return;
-  const std::string cells = format_text("%d x %d cells", grid, grid);
+  const std::string cells = format_text("%d x %d cells (u x v)", un, vn);
   const char* normals = s.flag("auto_normal") ? "" : ", no normals";
   gllab::draw_text_panel(8, 8, {"tessellate_surface", cells}, kWhite);
   gllab::draw_text_panel(half + 8, 8, {"glEvalMesh2", cells + normals}, kWhite);
@@ -179,15 +182,15 @@ gllab::Lab gllab::define_lab() {
       {{"t", 0.6, 0, 1, "curve: the dot at X(t), own and glEvalCoord1f"},
        {"curve_grid", 64, 1, 256, "curve: segments of glMapGrid1f and of the own points"},
        {"source", 0, 0, 2, "curve: 0 both, 1 own points only, 2 GL evaluator only"},
-       {"surface_grid", 12, 1, 64, "surface: cells along u and along v"},
+       {"surface_un", 12, 1, 64, "surface: glMapGrid2f's un, cells along u"},
+       {"surface_vn", 6, 1, 64, "surface: glMapGrid2f's vn, cells along v"},
+       {"grid_lines", 1, 0, 1, "surface: glEvalMesh2(GL_LINE) over GL's patch"},
        {"auto_normal", 1, 0, 1, "surface: glEnable(GL_AUTO_NORMAL) for glEvalMesh2"},
        {"nets", 1, 0, 1, "surface: the control net and its draggable points"},
        {"labels", 1, 0, 1, "text panels"}},
-      {{'g', "curve grid +8 segments", "curve_grid", +8},
-       {'G', "curve grid -8 segments", "curve_grid", -8},
-       {'c', "curve source: both > own > GL", "source", +1},
-       {'C', "curve source back", "source", -1},
-       {'m', "surface grid +1", "surface_grid", +1}, {'M', "surface grid -1", "surface_grid", -1},
+      {{'g', "curve grid +8 segments", "curve_grid", +8}, {'G', "curve grid -8", "curve_grid", -8},
+       {'c', "curve source: both > own > GL", "source", +1}, {'C', "source back", "source", -1},
+       {'m', "surface un +1", "surface_un", +1}, {'M', "surface un -1", "surface_un", -1},
        {'a', "GL_AUTO_NORMAL on/off", "auto_normal"}, {'n', "text panels on/off", "labels"}},
       init};
   lab.points = {{"P", kCurve, "the curve's control points b_0..b_n"},

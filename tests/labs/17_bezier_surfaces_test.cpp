@@ -3,9 +3,10 @@
 //    through b00 (and constant_twist from b33, which sets the twist): their
 //    other net points are made, so the list entries for them change nothing
 //    (lecture notes ch. 1, §1.7 Surface representations, "The twist vector").
-//  - de_casteljau's X(u, v) does not depend on the order of the two passes
-//    (§1.7, "Bézier tensor product": "It does not make any difference if the
-//    algorithm is applied first to parameter t or s").
+//  - de_casteljau's X(u, v) does not depend on the order of the two passes:
+//    de_casteljau_v_first shows the same point and partials (§1.7, "Bézier
+//    tensor product": "It does not make any difference if the algorithm is
+//    applied first to parameter t or s").
 // (The patch against glMap2f/glEvalMesh2 is lab 19's:
 // tests/labs/19_gl_evaluators_test.cpp; the joins are lab 18's.)
 #include <gtest/gtest.h>
@@ -52,18 +53,22 @@ TEST(BezierSurfacesLab, ConstructedPointsIgnoreTheirListEntries) {
   }
 }
 
-// u first or v first: other nets, the same point and partials (the caption's
-// X(u, v), Xu/4 and Xv/4 lines are the same text).
+// u first (de_casteljau) or v first (de_casteljau_v_first): other nets, the
+// same point and partials (the caption's X(u, v), Xu/4 and Xv/4 lines are the
+// same text), at the default (u, v) and at another.
 TEST(BezierSurfacesLab, DeCasteljauInEitherOrderGivesTheSamePoint) {
   ScratchDir dir("lab17");
-  const std::vector<std::string> u = view_text(kLab, dir, "de_casteljau", {"first=0"});
-  const std::vector<std::string> v = view_text(kLab, dir, "de_casteljau", {"first=1"});
-  ASSERT_EQ(u.size(), v.size());
-  ASSERT_GE(u.size(), 4u);
-  EXPECT_NE(u[0], v[0]);  // "u first: ..." against "v first: ..."
-  for (std::size_t k = 1; k < u.size(); ++k) EXPECT_EQ(u[k], v[k]);
-  EXPECT_GT(pixels_differing(render_view(kLab, dir, "de_casteljau", {"labels=0", "first=0"}),
-                             render_view(kLab, dir, "de_casteljau", {"labels=0", "first=1"})),
+  for (const std::vector<std::string>& at :
+       {std::vector<std::string>{}, std::vector<std::string>{"u=0.8", "v=0.65"}}) {
+    const std::vector<std::string> u = view_text(kLab, dir, "de_casteljau", at);
+    const std::vector<std::string> v = view_text(kLab, dir, "de_casteljau_v_first", at);
+    ASSERT_EQ(u.size(), v.size());
+    ASSERT_GE(u.size(), 4u);
+    EXPECT_NE(u[0], v[0]);  // "u first: ..." against "v first: ..."
+    for (std::size_t k = 1; k < u.size(); ++k) EXPECT_EQ(u[k], v[k]);
+  }
+  EXPECT_GT(pixels_differing(render_view(kLab, dir, "de_casteljau", {"labels=0"}),
+                             render_view(kLab, dir, "de_casteljau_v_first", {"labels=0"})),
             0);  // the nets differ
 }
 

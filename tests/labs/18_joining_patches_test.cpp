@@ -33,6 +33,8 @@ TEST(JoiningPatchesLab, ConstructedRowsIgnoreTheirListEntries) {
       {"join_c0", "Q[1]=2.5,-0.5,1.6", true},  {"join_c1", "Q[1]=2.5,-0.5,1.6", false},
       {"join_c1", "Q[5]=3.5,-0.5,0.8", true},  {"join_c2", "Q[5]=3.5,-0.5,0.8", false},
       {"join_c2", "Q[9]=4.5,-0.5,0.6", true},  {"join_c2", "P[9]=0.5,-0.5,1.3", true},
+      // join_c1 from below: the same rows made.
+      {"join_c1_below", "Q[1]=2.5,-0.5,1.6", false}, {"join_c1_below", "Q[5]=3.5,-0.5,0.8", true},
   };
   for (const Case& c : cases) {
     const long long differing = pixels_differing(render_view(kLab, dir, c.view, {"labels=0"}),

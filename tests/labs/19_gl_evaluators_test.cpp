@@ -23,11 +23,13 @@
 //
 // surface draws the patch twice, in the two halves of the window under the
 // same matrices and lighting: left the core's tessellation
-// (tessellate_surface on grid x grid cells, normals Xu x Xv from the core),
+// (tessellate_surface on un x vn cells, normals Xu x Xv from the core),
 // right glMap2f + glMapGrid2f + glEvalMesh2 with GL_AUTO_NORMAL on the same
-// grid (normals du x dv from Mesa's evaluator). Both put their vertices at
-// the same (u_i, v_j) of the same polynomial, so the halves must agree.
-// Where the tolerance comes from (measured on llvmpipe, nets=0 labels=0):
+// grid (normals du x dv from Mesa's evaluator), with glEvalMesh2(GL_LINE)'s
+// grid lines on top (grid_lines=1, GL's half only). Both put their vertices
+// at the same (u_i, v_j) of the same polynomial, so the filled halves must agree.
+// Where the tolerance comes from (measured on llvmpipe, nets=0 labels=0
+// grid_lines=0, the same number of cells along u and v):
 //  - The core splits each cell along its shorter diagonal; glEvalMesh2's
 //    triangle strips always split from (u_i, v_j+1) to (u_i+1, v_j). With
 //    the core forced to GL's diagonal (an experiment, not in the code), the
@@ -35,9 +37,9 @@
 //    float evaluator and the double core agree that closely.
 //  - With the shorter diagonal, a cell whose diagonals differ is a different
 //    pair of triangles: the difference shrinks with the cell size squared.
-//    Grid 12 (the default): 73 pixels off by more than 2, max 103 on the
-//    silhouette; grid 32: max 2 everywhere (674 pixels off by 1 or 2);
-//    grid 64: max 1.
+//    Grid 12: 73 pixels off by more than 2, max 103 on the silhouette (the
+//    default 12 x 6: 435, max 117); grid 32: max 2 everywhere (674 pixels
+//    off by 1 or 2); grid 64: max 1.
 // So at grid 32 no pixel may differ by more than kMaxChannelDelta = 2.
 // Mistakes measured against it at grid 32 (max channel difference):
 //  - GL_AUTO_NORMAL off (every vertex gets the current normal): 94;
@@ -161,9 +163,17 @@ gllab::Image half(const gllab::Image& im, int side) {
   return out;
 }
 
-gllab::Image surface(const ScratchDir& dir, int grid, std::vector<std::string> sets = {}) {
-  sets.insert(sets.end(), {"surface_grid=" + std::to_string(grid), "nets=0", "labels=0"});
+// surface with nets and labels off (the net and the captions are in one half only).
+gllab::Image surface_view(const ScratchDir& dir, std::vector<std::string> sets) {
+  sets.insert(sets.end(), {"nets=0", "labels=0"});
   return render_view(kLab, dir, "surface", sets);
+}
+
+// ... on a grid x grid mesh, without the grid lines: the filled patches alone.
+gllab::Image surface(const ScratchDir& dir, int grid, std::vector<std::string> sets = {}) {
+  const std::string n = std::to_string(grid);
+  sets.insert(sets.end(), {"surface_un=" + n, "surface_vn=" + n, "grid_lines=0"});
+  return surface_view(dir, sets);
 }
 
 long long lit_pixels(const gllab::Image& im) {  // the clay is red-dominated, the background is not
@@ -204,13 +214,34 @@ TEST(GlEvaluatorsLab, AControlPointMovedByOnePercentDiffersFromTheEvaluator) {
   }
 }
 
-// The default grid 12 as students see it: the shorter-diagonal cells differ,
-// but the halves pass the grading tolerance of reference_images/MANIFEST
-// (channel 24, one-pixel shift excused): 0 unexcused of 1 raw (measured).
+// The default grid 12 x 6 as students see it (the grid lines, GL's half only,
+// off): the shorter-diagonal cells differ, but the halves pass the grading
+// tolerance of reference_images/MANIFEST (channel 24, one-pixel shift
+// excused): 0 unexcused of 9 raw (measured).
 TEST(GlEvaluatorsLab, DefaultGridPassesTheGradingTolerance) {
   ScratchDir dir("lab19");
-  const gllab::Image both = surface(dir, 12);
+  const gllab::Image both = surface_view(dir, {"grid_lines=0"});
   EXPECT_EQ(gllab::compare_images(half(both, 1), half(both, 0), 24, 1).mismatched_pixels, 0);
+}
+
+// glMap2f with its strides swapped (3 for u, 12 for v) maps (u, v) to X(v, u):
+// the same surface, so on n x n cells the same picture (the winding and
+// GL_AUTO_NORMAL's du x dv both flip, and two-sided lighting lights it the
+// same). On 12 x 6 cells it draws what the right map draws on 6 x 12, and the
+// grid lines show it: GL's half at 12 x 6 against GL's half at 6 x 12 fails
+// the grading tolerance in 723 pixels (measured); without the lines the
+// filled patches differ in 80 raw pixels, all excused as one-pixel shifts.
+TEST(GlEvaluatorsLab, TheGridLinesTellUFromV) {
+  ScratchDir dir("lab19");
+  const std::vector<std::string> swap = {"surface_un=6", "surface_vn=12"};
+  const gllab::Comparison lines = gllab::compare_images(
+      half(surface_view(dir, {}), 1), half(surface_view(dir, swap), 1), 24, 1);
+  EXPECT_GT(lines.mismatched_pixels, 300);
+  std::vector<std::string> fill_only = swap;
+  fill_only.push_back("grid_lines=0");
+  const gllab::Comparison fill = gllab::compare_images(
+      half(surface_view(dir, {"grid_lines=0"}), 1), half(surface_view(dir, fill_only), 1), 24, 1);
+  EXPECT_EQ(fill.mismatched_pixels, 0) << "the filled patch alone cannot tell u from v";
 }
 
 }  // namespace
