@@ -58,8 +58,11 @@ IndexedMesh unshared(const IndexedMesh& mesh) {
   for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
     const std::size_t v = 3 * std::size_t{mesh.indices[i]};
     out.positions.insert(out.positions.end(), &mesh.positions[v], &mesh.positions[v] + 3);
-    out.normals.insert(out.normals.end(), &mesh.normals[v], &mesh.normals[v] + 3);
-    out.colours.insert(out.colours.end(), &mesh.colours[v], &mesh.colours[v] + 3);
+    // Only the arrays the mesh has: an iso-surface has no colours, maybe no normals.
+    if (!mesh.normals.empty())
+      out.normals.insert(out.normals.end(), &mesh.normals[v], &mesh.normals[v] + 3);
+    if (!mesh.colours.empty())
+      out.colours.insert(out.colours.end(), &mesh.colours[v], &mesh.colours[v] + 3);
     out.indices.push_back(static_cast<std::uint32_t>(i));
   }
   return out;

@@ -38,7 +38,8 @@ IndexedMesh torus_with_triangles(std::size_t triangles);
 
 /// The same triangles with nothing shared: vertex i of the result is vertex
 /// indices[i] of the mesh, and the result's indices are 0, 1, 2, ...
-/// What glDrawArrays(GL_TRIANGLES) needs.
+/// What glDrawArrays(GL_TRIANGLES) needs. Normals and colours are copied
+/// when the mesh has them (an empty array stays empty).
 IndexedMesh unshared(const IndexedMesh& mesh);
 
 /// One interleaved array of (x y z, nx ny nz, r g b) per vertex: 9 floats, a
