@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/indexed_mesh.h"
 #include "spline/tessellate.h"
 #include "spline/vec.h"
 
@@ -30,10 +31,19 @@ std::string obj_text(const spline::Mesh& mesh, const std::string& comment = "");
 /// The OBJ text of an open polyline: v lines and one l line.
 std::string obj_text(const std::vector<spline::Vec3>& polyline, const std::string& comment = "");
 
+/// The OBJ text of an IndexedMesh (mesh/indexed_mesh.h; an iso-surface from
+/// field::marching_cubes): v lines, vn lines (one normal per vertex) and f
+/// a//a b//b c//c faces; a mesh without normals gets f a b c. Colours are
+/// not written. Throws std::invalid_argument when positions or normals are
+/// not 3 floats per vertex, an index is out of range or the number of
+/// indices is no multiple of 3, or a number is not finite.
+std::string obj_text(const IndexedMesh& mesh, const std::string& comment = "");
+
 /// obj_text written to file atomically. Throws FileError (spline_json.h)
 /// naming the file when it cannot be written.
 void write_obj(const std::filesystem::path& file, const spline::Mesh& mesh, const std::string& comment = "");
 void write_obj(const std::filesystem::path& file, const std::vector<spline::Vec3>& polyline,
                const std::string& comment = "");
+void write_obj(const std::filesystem::path& file, const IndexedMesh& mesh, const std::string& comment = "");
 
 }  // namespace gllab::io

@@ -648,6 +648,9 @@ PointsFile parse_points(const std::string& text, const std::string& source) {
   return Checker(source).points_file(parse_json(text, source));
 }
 
+Json parse_json_text(const std::string& text, const std::string& source) { return parse_json(text, source); }
+std::string read_text_file(const std::filesystem::path& file) { return read_text(file); }
+
 SplineFile read_any(const std::filesystem::path& file) { return parse_any(read_text(file), file.string()); }
 BsplineCurve read_curve(const std::filesystem::path& file) { return parse_curve(read_text(file), file.string()); }
 BezierCurve read_bezier(const std::filesystem::path& file) { return parse_bezier(read_text(file), file.string()); }

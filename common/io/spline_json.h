@@ -77,6 +77,14 @@ PointsFile parse_points(const std::string& text, const std::string& source = "<s
 /// on that knot vector the B-splines are the Bernstein polynomials).
 spline::BsplineCurve as_bspline(const spline::BezierCurve& bezier);
 
+/// The JSON text of a file, parsed with this format's rules: an empty file, a
+/// NUL byte, a syntax error (line and column), a number that overflows to
+/// inf and a key given twice in one object are FileErrors naming source.
+/// Other JSON formats of common/io (field_json.h) share it.
+Json parse_json_text(const std::string& text, const std::string& source);
+/// A file's bytes; FileError naming it when it is a directory or unreadable.
+std::string read_text_file(const std::filesystem::path& file);
+
 /// Checks an already parsed JSON value as a spline file (same checks and
 /// messages as parse_any).
 SplineFile from_json(const Json& value, const std::string& source = "<json>");

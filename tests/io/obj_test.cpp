@@ -101,5 +101,53 @@ TEST(WriteObj, WritesAtomicallyAndNamesAnUnwritableFile) {
   }
 }
 
+// ---- IndexedMesh (an iso-surface from field::marching_cubes) --------------------
+
+/// The unit square as an IndexedMesh: floats, each vertex once.
+IndexedMesh indexed_square() {
+  IndexedMesh m;
+  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0.1f, 1, 0};
+  m.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+TEST(ObjTextIndexed, VertexNormalAndFaceLinesWithShortestFloats) {
+  // 0.1f prints as 0.1 (the shortest text that reads back to the same float).
+  EXPECT_EQ(obj_text(indexed_square(), "square"),
+            "# square\n"
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.1 1 0\n"
+            "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+            "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\n");
+  IndexedMesh bare = indexed_square();
+  bare.normals.clear();
+  EXPECT_EQ(obj_text(bare), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.1 1 0\nf 1 2 3\nf 1 3 4\n");
+}
+
+TEST(ObjTextIndexed, BadMeshesAreRefused) {
+  IndexedMesh m = indexed_square();
+  m.normals.pop_back();
+  EXPECT_THROW(obj_text(m), std::invalid_argument);  // one normal per vertex
+  m = indexed_square();
+  m.indices[5] = 4;
+  EXPECT_THROW(obj_text(m), std::invalid_argument);  // index out of range
+  m = indexed_square();
+  m.indices.pop_back();
+  EXPECT_THROW(obj_text(m), std::invalid_argument);  // not whole triangles
+  m = indexed_square();
+  m.positions[4] = std::nanf("");
+  EXPECT_THROW(obj_text(m), std::invalid_argument);
+}
+
+TEST(WriteObjIndexed, WritesAtomically) {
+  ScratchDir dir("obj");
+  write_obj(dir / "square.obj", indexed_square(), "c");
+  EXPECT_EQ(testing::read_file(dir / "square.obj"), obj_text(indexed_square(), "c"));
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
+  EXPECT_EQ(entries, 1);
+  EXPECT_THROW(write_obj("/nonexistent-dir/square.obj", indexed_square()), FileError);
+}
+
 }  // namespace
 }  // namespace gllab::io

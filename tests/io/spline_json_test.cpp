@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/field_json.h"
 #include "io/spline_json.h"
 #include "io_test_support.h"
 #include "spline/bspline.h"
@@ -224,10 +225,14 @@ void expect_same(const SplineFile& a, const SplineFile& b) {
   std::visit([&](const auto& x) { expect_same(x, std::get<std::decay_t<decltype(x)>>(b)); }, a);
 }
 
+/// The spline and points files in examples/ (blob scenes, "type": "blob_scene",
+/// are field_json_test's).
 std::vector<std::string> example_files() {
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(kExamplesDir))
-    if (entry.path().extension() == ".json") files.push_back(entry.path().filename().string());
+    if (entry.path().extension() == ".json" &&
+        Json::parse(testing::read_file(entry.path())).value("type", "") != "blob_scene")
+      files.push_back(entry.path().filename().string());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -312,7 +317,9 @@ TEST(Readme, EveryJsonExampleInTheFormatDocumentIsValid) {
     const std::size_t begin = start + 8, end = readme.find("```", begin);
     const std::string block = readme.substr(begin, end - begin);
     SCOPED_TRACE(block);
-    if (block.find("\"type\"") != std::string::npos && block.find("\"type\"") < block.find("\"points\""))
+    if (block.find("\"blob_scene\"") != std::string::npos)
+      EXPECT_NO_THROW(parse_blob_scene(block, "README.md"));  // field_json.h
+    else if (block.find("\"type\"") != std::string::npos && block.find("\"type\"") < block.find("\"points\""))
       EXPECT_NO_THROW(parse_any(block, "README.md"));
     else
       EXPECT_NO_THROW(parse_points(block, "README.md"));
