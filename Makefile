@@ -81,9 +81,10 @@ clang:
 # A separate build directory: the normal build never needs the peers (bench/README.md).
 bench:
 	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DGLLAB_BENCH=ON
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench grade_bench
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench iso_bench grade_bench
 	$(BENCH_BUILD)/bin/spline_bench $(BENCH_ARGS)
 	$(BENCH_BUILD)/bin/submission_bench $(SUBMISSION_BENCH_ARGS)
+	$(BENCH_BUILD)/bin/iso_bench $(ISO_BENCH_ARGS)
 	$(BENCH_BUILD)/bin/grade_bench $(GRADE_BENCH_ARGS)
 
 clean:
