@@ -116,8 +116,10 @@ void draw_cube_cases(const State& s) {
     gllab::draw_unit_cell(mask, kHole);  // inside corners red
     glColor3f(kSurface.r, kSurface.g, kSurface.b);
     gllab::draw_iso_mesh(r.mesh);
-    gllab::draw_panel_caption(p, -2, gllab::format_text("case %d", k), kText);
-    gllab::draw_panel_caption(p, -1, gllab::fmt("triangles: %g", r.mesh.triangle_count()), kText);
+    const std::size_t n = r.mesh.triangle_count();
+    gllab::draw_panel_caption(p, 0, gllab::format_text("case %d", k), kText);
+    const std::string count = gllab::format_text("%zu triangle%s", n, n == 1 ? "" : "s");
+    gllab::draw_panel_caption(p, -1, count, kText);
   }
   gllab::leave_panels(s.width, s.height);
 }
