@@ -150,14 +150,15 @@ double torus_field(const Vec3& x, double R_ring, double r_tube) {
   return r_tube - std::hypot(ring, x.z);
 }
 
-// Two Hermite blobs (a = 1, b = 0.45) at 0.9 times their merge distance for
-// iso 0.5 (density.h): each alone is a sphere of radius 0.225 (H0(1/2) = 1/2),
-// together they are joined by a neck. The field is evaluated directly, not
-// through sample(): 16.7 M points at n = 256.
+// Two Hermite blobs (a = 1, b = 0.45) as in lab 08's default: centres d = 1.4 b
+// apart, a little more than their merge distance 1.347 b for iso 0.5
+// (density.h), so at iso 0.5 they are two spheres of radius 0.225 (H0(1/2) =
+// 1/2), each slightly drawn towards the other. The field is evaluated directly,
+// not through sample(): 16.7 M points at n = 256.
 Grid3 two_blob_benchmark_field(int n) {
   check_count("two_blob_benchmark_field", "n", n);
   const double a = 1, b = 0.45;
-  const double half = 0.45 * merge_distance(Density::kHermite, a, b, 0.5);
+  const double half = 0.7 * b;  // d / 2
   Grid3 g;
   g.nx = g.ny = g.nz = n;
   g.origin = {-1, -1, -1};

@@ -63,8 +63,9 @@ double torus_field(const Vec3& x, double R_ring, double r_tube);
 
 /// The benchmark field (bench/iso_bench.cpp, common/field/README.md): n^3
 /// points over [-1, 1]^3 of two Hermite blobs a = 1, b = 0.45 at (+-d/2, 0, 0),
-/// d = 0.9 merge_distance(kHermite, 1, 0.45, 0.5): at iso 0.5 two spheres of
-/// radius b/2 joined by a neck. Throws std::invalid_argument naming n < 2.
+/// d = 1.4 b as in lab 08's default: at iso 0.5 two spheres of radius about
+/// b/2, just apart (they merge at d = 1.347 b). Throws std::invalid_argument
+/// naming n < 2.
 Grid3 two_blob_benchmark_field(int n);
 
 }  // namespace gllab::field

@@ -195,11 +195,12 @@ TEST(MarchingCubes, TwoBlobsMergeAtTheMergeDistance) {
   }
 }
 
-TEST(MarchingCubes, BenchmarkFieldIsOneClosedSurface) {
+// Lab 08's default, d = 1.4 b > merge distance 1.347 b: two closed spheres.
+TEST(MarchingCubes, BenchmarkFieldIsTwoClosedSurfaces) {
   const MeshTopology t = topology(marching_cubes(two_blob_benchmark_field(96), 0.5).mesh);
   EXPECT_TRUE(t.closed_and_oriented());
-  EXPECT_EQ(t.components, 1u);
-  EXPECT_EQ(t.euler(), 2);
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.euler(), 4);
 }
 
 // ---- saddle faces: the decider against Lorensen and Cline ---------------------------------
