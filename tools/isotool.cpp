@@ -29,27 +29,20 @@
 #include "field/marching_cubes.h"
 #include "field/mesh_measures.h"
 #include "io/field_json.h"
+#include "cli.h"
 #include "io/obj.h"
 #include "io/spline_json.h"
 #include "io/volume_nrrd.h"
 
 namespace {
 
+using gllab::cli::kBadInput, gllab::cli::kFailed, gllab::cli::kOk;
+using gllab::cli::OutputError, gllab::cli::UsageError;
+using gllab::cli::parse_count, gllab::cli::parse_number;
 using gllab::io::FileError;
 using gllab::io::shortest_text;
 using gllab::spline::Vec3;
 namespace field = gllab::field;
-
-constexpr int kOk = 0;
-constexpr int kFailed = 1;    // the output could not be written (or an internal error)
-constexpr int kBadInput = 2;  // bad arguments or a bad input file
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-struct OutputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 constexpr int kDefaultGrid = 64;
 constexpr int kMaxGrid = 512;
@@ -86,30 +79,6 @@ const char* const kHelp =
     "\n"
     "Errors: one line on stderr; exit 2 for bad input or usage, 1 when the output\n"
     "cannot be written, 0 otherwise.\n";
-
-double parse_number(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() ||
-      std::isspace(static_cast<unsigned char>(text[0])))
-    throw UsageError(what + ": '" + text + "' is not a number");
-  if (!std::isfinite(x)) throw UsageError(what + ": '" + text + "' is not finite");
-  return x;
-}
-
-int parse_count(const std::string& text, const std::string& what, int lo, int hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() ||
-      std::isspace(static_cast<unsigned char>(text[0])))
-    throw UsageError(what + ": '" + text + "' is not a whole number");
-  if (errno == ERANGE || v < lo || v > hi)
-    throw UsageError(what + ": " + text + " (must be " + std::to_string(lo) + ".." +
-                     std::to_string(hi) + ")");
-  return static_cast<int>(v);
-}
 
 bool ends_with(const std::string& s, const std::string& tail) {
   if (s.size() < tail.size()) return false;

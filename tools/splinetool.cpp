@@ -27,6 +27,7 @@
 #include <variant>
 #include <vector>
 
+#include "cli.h"
 #include "io/obj.h"
 #include "io/spline_json.h"
 #include "spline/bezier.h"
@@ -40,26 +41,15 @@
 
 namespace {
 
+using gllab::cli::kBadInput, gllab::cli::kFailed, gllab::cli::kOk;
+using gllab::cli::OutputError, gllab::cli::UsageError;
+using gllab::cli::parse_count, gllab::cli::parse_number;
 using gllab::io::FileError;
 using gllab::io::Json;
 using gllab::io::shortest_text;
 using gllab::io::SplineFile;
 using gllab::io::to_json;
 using namespace gllab::spline;
-
-constexpr int kOk = 0;
-constexpr int kFailed = 1;    // an output file could not be written (or an internal error)
-constexpr int kBadInput = 2;  // bad arguments or a bad input file
-
-/// Bad arguments: exit 2 with one line.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// An output file that cannot be written: exit 1 with one line.
-struct OutputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // --- command line ---------------------------------------------------------------
 
@@ -76,27 +66,6 @@ std::optional<std::string> option(const std::map<std::string, std::string>& opti
   const auto it = options.find(name);
   if (it == options.end()) return std::nullopt;
   return it->second;
-}
-
-double parse_number(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || std::isspace(static_cast<unsigned char>(text[0])))
-    throw UsageError(what + ": '" + text + "' is not a number");
-  if (!std::isfinite(x)) throw UsageError(what + ": '" + text + "' is not finite");
-  return x;
-}
-
-int parse_count(const std::string& text, const std::string& what, int lo, int hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() || std::isspace(static_cast<unsigned char>(text[0])))
-    throw UsageError(what + ": '" + text + "' is not a whole number");
-  if (errno == ERANGE || v < lo || v > hi)
-    throw UsageError(what + ": " + text + " (must be " + std::to_string(lo) + ".." + std::to_string(hi) + ")");
-  return static_cast<int>(v);
 }
 
 std::vector<std::string> split_list(const std::string& text, char separator) {

@@ -2,6 +2,7 @@
 // common/io/README.md). Every key is checked here, so that a mistake is
 // reported at its JSON path ("blobs[2].centre[1]: ...").
 #include "io/field_json.h"
+#include "io/json_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,69 +16,15 @@ using spline::Vec3;
 
 namespace {
 
+using detail::describe;
+using detail::index_path;
+using detail::member_path;
+
 constexpr const char* kDensities = R"("hermite", "wyvill" or "blinn")";
 
-std::string member_path(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-std::string index_path(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-std::string describe(const Json& v) {
-  if (v.is_array()) return v.empty() ? "an empty array" : "an array";
-  if (v.is_object()) return v.empty() ? "an empty object" : "an object";
-  std::string text = v.dump(-1, ' ', false, Json::error_handler_t::replace);
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
-
-class Checker {
+class Checker : public detail::JsonChecker {
  public:
-  explicit Checker(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw FileError(source_, path, problem);
-  }
-
-  void require_object(const Json& v, const std::string& path, const std::string& what) const {
-    if (!v.is_object()) fail(path, "expected " + what + ", got " + describe(v));
-  }
-
-  void only_keys(const Json& object, const std::string& path, const std::vector<std::string>& known,
-                 const std::string& kind) const {
-    for (const auto& item : object.items()) {
-      if (std::find(known.begin(), known.end(), item.key()) != known.end()) continue;
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      fail(member_path(path, item.key()),
-           "unknown key in a " + kind + " (known keys: " + list + ")");
-    }
-  }
-
-  const Json& member(const Json& object, const std::string& path, const std::string& key,
-                     const std::string& kind) const {
-    const auto it = object.find(key);
-    if (it == object.end()) fail(member_path(path, key), "missing (a " + kind + " needs it)");
-    return *it;
-  }
-
-  const Json* optional_member(const Json& object, const std::string& key) const {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-  }
-
-  double number(const Json& v, const std::string& path) const {
-    if (!v.is_number()) fail(path, "expected a number, got " + describe(v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(path, shortest_text(x) + " (numbers must be finite)");
-    return x;
-  }
-
-  std::string string(const Json& v, const std::string& path) const {
-    if (!v.is_string()) fail(path, "expected a string, got " + describe(v));
-    return v.get<std::string>();
-  }
+  using JsonChecker::JsonChecker;
 
   Vec3 point(const Json& v, const std::string& path) const {
     if (!v.is_array()) fail(path, "expected a point [x, y, z], got " + describe(v));
@@ -154,8 +101,6 @@ class Checker {
     return s;
   }
 
- private:
-  std::string source_;
 };
 
 Json point_json(const Vec3& p) { return Json::array({p.x, p.y, p.z}); }

@@ -3,6 +3,7 @@
 // mistake is reported at its JSON path ("knots[5]: ..."); whatever is left
 // is the core's to judge (spline::validate, trim validation).
 #include "io/spline_json.h"
+#include "io/json_checks.h"
 
 #include <unistd.h>
 
@@ -62,34 +63,20 @@ std::string point_text(const Vec3& p) {
   return "(" + shortest_text(p.x) + ", " + shortest_text(p.y) + ", " + shortest_text(p.z) + ")";
 }
 
+using detail::describe;
+using detail::index_path;
+using detail::member_path;
+
 constexpr const char* kSplineTypes = R"("bspline_curve", "bezier_curve" or "bspline_surface")";
-
-std::string member_path(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-std::string index_path(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-
-/// How a value appears in a message: scalars as written, containers by kind.
-std::string describe(const Json& v) {
-  if (v.is_array()) return v.empty() ? "an empty array" : "an array";
-  if (v.is_object()) return v.empty() ? "an empty object" : "an object";
-  std::string text = v.dump(-1, ' ', false, Json::error_handler_t::replace);
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
 
 std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
-/// Checks one parsed file. Every failure throws FileError(source, path, problem).
-class Checker {
+/// Checks one parsed file (json_checks.h: every failure one FileError).
+class Checker : public detail::JsonChecker {
  public:
-  explicit Checker(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw FileError(source_, path, problem);
-  }
+  using JsonChecker::JsonChecker;
 
   /// The core's own checks (spline::validate and friends) for whatever the
   /// JSON-path checks above let through; the message keeps the JSON path.
@@ -100,46 +87,6 @@ class Checker {
     } catch (const std::invalid_argument& e) {
       fail(path, e.what());
     }
-  }
-
-  void require_object(const Json& v, const std::string& path, const std::string& what) const {
-    if (!v.is_object()) fail(path, "expected " + what + ", got " + describe(v));
-  }
-
-  /// Rejects keys the format does not know (a typo such as "weight" would
-  /// otherwise silently turn a NURBS curve into a polynomial one).
-  void only_keys(const Json& object, const std::string& path, const std::vector<std::string>& known,
-                 const std::string& kind) const {
-    for (const auto& item : object.items()) {
-      if (std::find(known.begin(), known.end(), item.key()) != known.end()) continue;
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      fail(member_path(path, item.key()), "unknown key in a " + kind + " (known keys: " + list + ")");
-    }
-  }
-
-  const Json& member(const Json& object, const std::string& path, const std::string& key,
-                     const std::string& kind) const {
-    const auto it = object.find(key);
-    if (it == object.end()) fail(member_path(path, key), "missing (a " + kind + " needs it)");
-    return *it;
-  }
-
-  const Json* optional_member(const Json& object, const std::string& key) const {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-  }
-
-  double number(const Json& v, const std::string& path) const {
-    if (!v.is_number()) fail(path, "expected a number, got " + describe(v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(path, shortest_text(x) + " (numbers must be finite)");
-    return x;
-  }
-
-  std::string string(const Json& v, const std::string& path) const {
-    if (!v.is_string()) fail(path, "expected a string, got " + describe(v));
-    return v.get<std::string>();
   }
 
   const Json& array(const Json& v, const std::string& path, const std::string& what) const {
@@ -402,8 +349,6 @@ class Checker {
     return f;
   }
 
- private:
-  std::string source_;
 };
 
 // --- parsing -----------------------------------------------------------------
