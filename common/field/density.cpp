@@ -76,9 +76,7 @@ const char* density_name(Density d) {
   return "?";
 }
 
-namespace {
-
-double density_at(Density d, double t, double a, double b) {
+double density_value(Density d, double t, double a, double b) {
   switch (d) {
     case Density::kWyvill:
       return wyvill_density(t, a, b);
@@ -88,6 +86,8 @@ double density_at(Density d, double t, double a, double b) {
       return hermite_density(t, a, b);
   }
 }
+
+namespace {
 
 double density_slope(Density d, double t, double a, double b) {
   switch (d) {
@@ -105,7 +105,7 @@ double density_slope(Density d, double t, double a, double b) {
 double BlobField::value(const Vec3& x) const {
   double sum = 0;
   for (const Blob& blob : blobs)
-    sum += density_at(this->density, norm(x - blob.centre), blob.a, blob.b);
+    sum += density_value(this->density, norm(x - blob.centre), blob.a, blob.b);
   return sum;
 }
 
@@ -138,7 +138,7 @@ double bisect(Density d, double a, double b, double c) {
   while (hi - lo > 1e-15 * b) {
     const double mid = 0.5 * (lo + hi);
     if (mid <= lo || mid >= hi) break;
-    (density_at(d, mid, a, b) > c ? lo : hi) = mid;
+    (density_value(d, mid, a, b) > c ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

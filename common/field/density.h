@@ -38,6 +38,8 @@ double blinn_density_derivative(double t, double a, double b);
 
 enum class Density { kHermite, kWyvill, kBlinn };
 const char* density_name(Density d);  // "hermite", "wyvill", "blinn"
+/// f(t) of density d (one of the three above).
+double density_value(Density d, double t, double a, double b);
 
 struct Blob {
   Vec3 centre;

@@ -89,22 +89,12 @@ TEST(Density, Names) {
   EXPECT_STREQ(density_name(Density::kBlinn), "blinn");
 }
 
-double f_of(Density d, double t, double a, double b) {
-  switch (d) {
-    case Density::kWyvill:
-      return wyvill_density(t, a, b);
-    case Density::kBlinn:
-      return blinn_density(t, a, b);
-    default:
-      return hermite_density(t, a, b);
-  }
-}
 
 TEST(Density, IsoRadiusSolvesFEqualsC) {
   for (Density d : {Density::kHermite, Density::kWyvill, Density::kBlinn})
     for (double q : {0.01, 0.1, 0.25, 0.5, 0.75, 0.9, 0.99}) {
       const double c = q * kA, r = iso_radius(d, kA, kB, c);
-      EXPECT_NEAR(f_of(d, r, kA, kB), c, 1e-12) << density_name(d) << " c=" << c;
+      EXPECT_NEAR(density_value(d, r, kA, kB), c, 1e-12) << density_name(d) << " c=" << c;
     }
   // Exact values: H0(1/2) = 1/2; Wyvill's f(b/2) = a/2.
   EXPECT_NEAR(iso_radius(Density::kHermite, kA, kB, kA / 2), kB / 2, 1e-15);
@@ -115,7 +105,7 @@ TEST(Density, MergeDistanceMakesTheMidpointReachC) {
   // 2 f(d / 2) = c at d = merge_distance.
   for (Density d : {Density::kHermite, Density::kWyvill, Density::kBlinn}) {
     const double c = 0.5, dist = merge_distance(d, 1, 1, c);
-    EXPECT_NEAR(2 * f_of(d, dist / 2, 1, 1), c, 1e-12) << density_name(d);
+    EXPECT_NEAR(2 * density_value(d, dist / 2, 1, 1), c, 1e-12) << density_name(d);
   }
 }
 
