@@ -39,6 +39,7 @@
 #include "field/marching_cubes.h"
 #include "iso_bench_config.h"
 #include "peer_support.h"  // tests/field: the vertex-set comparison the peer tests use
+#include "rate_reporter.h"
 
 #ifdef GLLAB_BENCH_HAVE_VTK
 #include <vtkFloatArray.h>
@@ -52,6 +53,8 @@
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkVersion.h>
+
+#include "vtk_grid.h"  // tests/field: the grid as vtkImageData, no copy
 #endif
 
 namespace {
@@ -121,19 +124,6 @@ struct Own {
 
 // ---- VTK -------------------------------------------------------------------------
 #ifdef GLLAB_BENCH_HAVE_VTK
-vtkSmartPointer<vtkImageData> wrap(const fd::Grid3& g) {
-  vtkNew<vtkFloatArray> scalars;
-  scalars->SetNumberOfComponents(1);
-  scalars->SetArray(const_cast<float*>(g.values.data()), vtkIdType(g.values.size()),
-                    1);  // no copy, not freed
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(g.nx, g.ny, g.nz);
-  image->SetOrigin(g.origin.x, g.origin.y, g.origin.z);
-  image->SetSpacing(g.spacing.x, g.spacing.y, g.spacing.z);
-  image->GetPointData()->SetScalars(scalars);
-  return image;
-}
-
 template <class Filter>
 struct Vtk {
   vtkSmartPointer<Filter> filter = vtkSmartPointer<Filter>::New();
@@ -162,7 +152,7 @@ struct Vtk {
 std::string vtk_setup(const fd::Grid3& g) {
 #ifdef GLLAB_BENCH_HAVE_VTK
   vtkSMPTools::Initialize(1);
-  static vtkSmartPointer<vtkImageData> image = wrap(g);
+  static vtkSmartPointer<vtkImageData> image = gllab::field::testing::vtk_image(g);
   struct Spec {
     const char* name;
     bool fe, normals;
@@ -247,39 +237,6 @@ void register_benchmarks(std::size_t voxels) {
         ->UseRealTime();
   }
 }
-
-// Prints like the console reporter and keeps each row's voxels/s (the median
-// over repetitions when --benchmark_repetitions is given).
-class SummaryReporter : public benchmark::ConsoleReporter {
- public:
-  explicit SummaryReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs) {
-      if (run.error_occurred) continue;
-      const bool iteration = run.run_type == Run::RT_Iteration;
-      if (!iteration && run.aggregate_name != "median") continue;
-      const auto c = run.counters.find("items_per_second");
-      if (c == run.counters.end()) continue;
-      if (iteration)
-        rates_[run.run_name.function_name].push_back(c->second.value);
-      else
-        medians_[run.run_name.function_name] = c->second.value;
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-  double rate(const std::string& name) const {
-    if (const auto m = medians_.find(name); m != medians_.end()) return m->second;
-    const auto it = rates_.find(name);
-    if (it == rates_.end()) return 0;
-    std::vector<double> r = it->second;
-    std::sort(r.begin(), r.end());
-    return r[r.size() / 2];
-  }
-
- private:
-  std::map<std::string, std::vector<double>> rates_;
-  std::map<std::string, double> medians_;
-};
 
 void print_summary(const fd::Grid3& g, const std::string& vtk_info, std::size_t ambiguous) {
   const double voxels = double(g.values.size());
@@ -389,7 +346,7 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   register_benchmarks(voxels);
-  SummaryReporter reporter(color);
+  gllab::bench::RateReporter reporter(color, {"items_per_second"});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   for (auto& r : g_rows) r->rate = reporter.rate("iso/" + r->name);
   print_summary(grid, vtk_info, ambiguous);

@@ -31,6 +31,7 @@
 #include "bench_config.h"
 #include "bench_data.h"
 #include "peers.h"
+#include "rate_reporter.h"
 #include "spline/bspline.h"
 #include "spline/cubic_spline.h"
 #include "spline/surface.h"
@@ -507,41 +508,6 @@ void register_benchmarks() {
   }
 }
 
-// Prints like the console reporter and keeps each benchmark's rate (the
-// median over repetitions when --benchmark_repetitions is given).
-class SummaryReporter : public benchmark::ConsoleReporter {
- public:
-  explicit SummaryReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs) {
-      if (run.error_occurred) continue;
-      const bool iteration = run.run_type == Run::RT_Iteration;
-      if (!iteration && run.aggregate_name != "median") continue;
-      for (const char* name : {"points/s", "nodes/s"}) {
-        const auto c = run.counters.find(name);
-        if (c == run.counters.end()) continue;
-        if (iteration)
-          rates_[run.run_name.function_name].push_back(c->second.value);
-        else
-          medians_[run.run_name.function_name] = c->second.value;
-      }
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-  double rate(const std::string& name) const {
-    if (const auto m = medians_.find(name); m != medians_.end()) return m->second;
-    const auto it = rates_.find(name);
-    if (it == rates_.end()) return 0;
-    std::vector<double> r = it->second;
-    std::sort(r.begin(), r.end());
-    return r[r.size() / 2];
-  }
-
- private:
-  std::map<std::string, std::vector<double>> rates_;
-  std::map<std::string, double> medians_;
-};
-
 std::string ratio_text(double own, double other) {
   if (own <= 0 || other <= 0) return "-";
   char buf[32];
@@ -633,7 +599,7 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   register_benchmarks();
-  SummaryReporter reporter(color);
+  gllab::bench::RateReporter reporter(color, {"points/s", "nodes/s"});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   for (auto& e : g_entries) e->rate = reporter.rate(e->full_name());
   print_summary();

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "peer_support.h"
+#include "vtk_grid.h"
 
 namespace gllab::field::peer {
 namespace {
@@ -45,20 +46,6 @@ struct PeerMesh {
   std::vector<P3> vertices;
   std::vector<std::array<vtkIdType, 3>> triangles;
 };
-
-// The grid's floats as a vtkImageData, without a copy (SetArray, save = 1:
-// VTK does not free them).
-vtkSmartPointer<vtkImageData> wrap(const Grid3& g) {
-  vtkNew<vtkFloatArray> scalars;
-  scalars->SetNumberOfComponents(1);
-  scalars->SetArray(const_cast<float*>(g.values.data()), vtkIdType(g.values.size()), 1);
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(g.nx, g.ny, g.nz);
-  image->SetOrigin(g.origin.x, g.origin.y, g.origin.z);
-  image->SetSpacing(g.spacing.x, g.spacing.y, g.spacing.z);
-  image->GetPointData()->SetScalars(scalars);
-  return image;
-}
 
 PeerMesh mesh_of(vtkPolyData* out) {
   PeerMesh m;
@@ -79,7 +66,7 @@ PeerMesh mesh_of(vtkPolyData* out) {
 
 template <class Filter>
 PeerMesh run_vtk(const Grid3& g, double c) {
-  vtkSmartPointer<vtkImageData> image = wrap(g);
+  vtkSmartPointer<vtkImageData> image = gllab::field::testing::vtk_image(g);
   vtkNew<Filter> filter;
   filter->SetInputData(image);
   filter->SetValue(0, c);

@@ -1,0 +1,53 @@
+// bench/rate_reporter.h — the console reporter of spline_bench and iso_bench:
+// it prints like Google Benchmark's and keeps each benchmark's rate (one of the
+// named counters; the median over repetitions when --benchmark_repetitions is
+// given), for the summary table each program prints after the run.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gllab::bench {
+
+class RateReporter : public benchmark::ConsoleReporter {
+ public:
+  RateReporter(bool color, std::vector<std::string> counters)
+      : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular), counters_(std::move(counters)) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs) {
+      if (run.error_occurred) continue;
+      const bool iteration = run.run_type == Run::RT_Iteration;
+      if (!iteration && run.aggregate_name != "median") continue;
+      for (const std::string& name : counters_) {
+        const auto c = run.counters.find(name);
+        if (c == run.counters.end()) continue;
+        if (iteration)
+          rates_[run.run_name.function_name].push_back(c->second.value);
+        else
+          medians_[run.run_name.function_name] = c->second.value;
+      }
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  /// The rate of a benchmark by its function name: the median row if there
+  /// was one, else the middle of its iterations' rates; 0 if it did not run.
+  double rate(const std::string& name) const {
+    if (const auto m = medians_.find(name); m != medians_.end()) return m->second;
+    const auto it = rates_.find(name);
+    if (it == rates_.end()) return 0;
+    std::vector<double> r = it->second;
+    std::sort(r.begin(), r.end());
+    return r[r.size() / 2];
+  }
+
+ private:
+  std::vector<std::string> counters_;
+  std::map<std::string, std::vector<double>> rates_;
+  std::map<std::string, double> medians_;
+};
+
+}  // namespace gllab::bench
