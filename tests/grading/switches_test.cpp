@@ -50,6 +50,8 @@ TEST_P(Switches, EveryTaughtSwitchChangesAGradedView) {
       continue;
     }
     const fs::path build = kFixtures / "switches" / lab / std::to_string(k);
+    // A switch whose program was not built would fail every view for that alone.
+    ASSERT_TRUE(fs::exists(build / (lab + "_headless"))) << what << ": " << build << " was not built";
     const fs::path report = dir / std::to_string(k);
     const gllab::ProcessResult r =
         gllab::run_process({(kBinDir / "labgrade").string(), "--build", build.string(), "--labs", lab, "--profile",

@@ -26,20 +26,24 @@ struct LabView {
   std::string lab, view;
 };
 
-// --list-views prints "name" per view, "name expect_error" for an error view
-// (harness/lab.h View::expect_error): those have no reference image and are
-// tested by EveryErrorView below.
+// The views of every lab, from the file the build writes by running each
+// lab's --list-views (tests/harness/list_views.cmake): "<lab> <view>" per
+// view, "<lab> <view> expect_error" for an error view (harness/lab.h
+// View::expect_error: those have no reference image and are tested by
+// EveryErrorView below), "<lab> LIST_VIEWS_FAILED" when a program could not
+// list them. Reading the file keeps this program's start-up short: it starts
+// once per test.
 std::vector<LabView> all_views(bool error_views) {
   std::vector<LabView> views;
-  for (const std::string& lab : gllab::testing::lab_ids()) {
-    const gllab::ProcessResult r = run_process({headless(lab), "--list-views"});
-    std::stringstream in(r.out);
-    for (std::string line; std::getline(in, line);) {
-      const std::size_t space = line.find(' ');
-      const bool is_error_view = space != std::string::npos && line.substr(space + 1) == "expect_error";
-      if (is_error_view == error_views) views.push_back({lab, line.substr(0, space)});
-    }
-    if (r.exit_status != 0 && !error_views) views.push_back({lab, "LIST_VIEWS_FAILED"});
+  std::ifstream in(GLLAB_VIEWS_FILE);
+  if (!in) return {{"", "VIEWS_FILE_MISSING"}};
+  for (std::string line; std::getline(in, line);) {
+    std::stringstream fields(line);
+    std::string lab, view, flag;
+    fields >> lab >> view;
+    const bool is_error_view = (fields >> flag) && flag == "expect_error";
+    if (view == "LIST_VIEWS_FAILED" ? !error_views : is_error_view == error_views)
+      views.push_back({lab, view});
   }
   return views;
 }
