@@ -5,6 +5,7 @@
 #include "io/spline_json.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -56,6 +57,16 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == "--load") o.load = value();
     else if (a == "--capture-views" && runner == Runner::kWindow) o.capture_views = value();
     else if (a == "--capture-at-exit" && runner == Runner::kWindow) o.capture_at_exit = value();
+    else if (a == "--frames" && runner == Runner::kWindow) {
+      const std::string& n = value();
+      char* end = nullptr;
+      const long frames = std::strtol(n.c_str(), &end, 10);
+      if (n.empty() || *end != '\0' || !std::isdigit(static_cast<unsigned char>(n[0])) ||
+          frames < 1 || frames > kMaxFrames)
+        throw UsageError("--frames '" + n + "' (expected a whole number 1.." +
+                         std::to_string(kMaxFrames) + ")");
+      o.frames = static_cast<int>(frames);
+    }
     else if (a == "--camera") o.camera = value();
     else if (a == "--time") {
       const std::string& t = value();
@@ -154,7 +165,9 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
         << "--capture draws the first frame, writes it as PNG and exits (window smoke test);\n"
         << "--capture-views DIR does so for every view, as DIR/<lab>__<view>.png (graders\n"
         << "compare window and headless renders); --capture-at-exit FILE writes the last\n"
-        << "frame shown when the window closes (scripted tests).\n\n";
+        << "frame shown when the window closes (scripted tests); --frames N draws the view\n"
+        << "N more times after the first, prints the time per frame and exits (the figures\n"
+        << "of the labs' READMEs).\n\n";
   }
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"

@@ -23,6 +23,7 @@ struct Options {
   std::string out;                  // --out FILE (headless), --capture FILE (window)
   std::string capture_views;        // --capture-views DIR (window): every view to DIR/<lab>__<view>.png
   std::string capture_at_exit;      // --capture-at-exit FILE (window): the last frame shown, when it closes
+  int frames = 0;                   // --frames N (window): draw N frames, print the frame rate, exit
   std::string camera;               // --camera yaw,pitch,zoom (State::camera)
   std::vector<std::string> sets;    // --set key=value, in order
   std::string load;                 // --load FILE: the lab's curve or surface (model_file.h)
@@ -36,6 +37,7 @@ struct Options {
 };
 
 inline constexpr int kMaxSize = 8192;
+inline constexpr int kMaxFrames = 100000;
 
 /// Parses argv (without argv[0]). Throws UsageError naming the bad argument.
 Options parse_options(const std::vector<std::string>& args, Runner runner);

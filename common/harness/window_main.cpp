@@ -10,6 +10,7 @@
 #include <GL/freeglut.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -47,6 +48,9 @@ struct WindowState {
   std::string notice;                   // one line for the user (a file saved), until the next key
   std::string capture_at_exit;          // --capture-at-exit FILE: the last frame, written at the end
   std::vector<std::uint8_t> last_frame; // its pixels, bottom-up RGBA (only with --capture-at-exit)
+  int frames = 0;                       // --frames N: frames to time after the first
+  int frames_drawn = 0;
+  std::chrono::steady_clock::time_point frames_start;
   // A right-button drag of the camera: where it started, in GLUT pixels.
   struct Turn {
     int x = 0, y = 0;
@@ -148,6 +152,22 @@ void display() {
     return;
   }
   glutSwapBuffers();
+  if (w.frames > 0) {
+    // --frames N: the first frame warms up (caches, meshes made once); the N after it are timed,
+    // each to the end of its drawing (glFinish), swap included.
+    glFinish();
+    const auto now = std::chrono::steady_clock::now();
+    if (w.frames_drawn++ == 0) w.frames_start = now;
+    if (w.frames_drawn > w.frames) {
+      const double s = std::chrono::duration<double>(now - w.frames_start).count();
+      std::printf("%d frames of view %s in %.3f s: %.1f ms per frame, %.1f frames/s\n", w.frames,
+                  w.state->view().c_str(), s, 1000 * s / w.frames, w.frames / s);
+      std::fflush(stdout);
+      quit(w.exit_status);
+      return;
+    }
+    glutPostRedisplay();
+  }
 }
 
 void reshape(int width, int height) {
@@ -318,6 +338,7 @@ int main(int argc, char** argv) {
     window.capture = options.out;
     window.capture_views = options.capture_views;
     window.capture_at_exit = options.capture_at_exit;
+    window.frames = options.frames;
     if (!window.capture_views.empty()) window.state->select_view(window.lab.views.front().name);
   } catch (const gllab::UsageError& e) {
     return fail(2, e.what());

@@ -217,3 +217,22 @@ TEST(Options, PrintTextIsHeadlessOnly) {
   EXPECT_TRUE(gllab::parse_options({"--print-text", "--out", "x.png"}, Runner::kHeadless).print_text);
   EXPECT_THROW(gllab::parse_options({"--print-text"}, Runner::kWindow), gllab::UsageError);
 }
+
+// --frames N times the window (the labs' README figures): a whole number in
+// 1..kMaxFrames, the window runner's only.
+TEST(Options, FramesIsAWholeNumberForTheWindowOnly) {
+  using gllab::Runner;
+  EXPECT_EQ(gllab::parse_options({"--frames", "20"}, Runner::kWindow).frames, 20);
+  EXPECT_EQ(gllab::parse_options({"--frames", "100000"}, Runner::kWindow).frames, gllab::kMaxFrames);
+  for (const char* bad : {"0", "-3", "2.5", "", "x", "100001", " 5", "5 ", "+5", "1e3"}) {
+    try {
+      gllab::parse_options({"--frames", bad}, Runner::kWindow);
+      ADD_FAILURE() << "accepted --frames '" << bad << "'";
+    } catch (const gllab::UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("--frames '" + std::string(bad) + "'"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(gllab::parse_options({"--frames", "5", "--out", "x.png"}, Runner::kHeadless),
+               gllab::UsageError);
+}
