@@ -252,19 +252,22 @@ Image image_from_bottom_up(const std::uint8_t* rgba, int width, int height) {
   return img;
 }
 
-// --- read_png ------------------------------------------------------------------
+// --- read_png, decode_png ---------------------------------------------------------
 Image read_png(const std::string& path) {
-  const std::string where = "read_png: " + quote(path) + ": ";
-  const std::vector<std::uint8_t> bytes = read_file(path, where);
+  const std::vector<std::uint8_t> bytes = read_file(path, "read_png: " + quote(path) + ": ");
+  return decode_png(bytes.data(), bytes.size(), "read_png: " + quote(path));
+}
 
+Image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name) {
+  const std::string where = name + ": ";
   // Every PNG starts with the same 8-byte signature (\x89PNG\r\n\x1a\n).
   constexpr std::size_t kSignatureSize = 8;
-  if (bytes.size() < kSignatureSize || png_sig_cmp(bytes.data(), 0, kSignatureSize) != 0)
+  if (data == nullptr || size < kSignatureSize || png_sig_cmp(data, 0, kSignatureSize) != 0)
     throw ImageError(where + "not a PNG file");
 
   PngDecoder d;
-  d.data = bytes.data();
-  d.size = bytes.size();
+  d.data = data;
+  d.size = size;
   d.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, d.message, on_png_error, on_png_warning);
   if (d.png == nullptr) throw ImageError(where + "libpng: cannot create a read struct");
   DecoderCleanup cleanup{d};

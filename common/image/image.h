@@ -54,6 +54,11 @@ Image image_from_bottom_up(const std::uint8_t* rgba, int width, int height);
 ///   "read_png: 'x.png': corrupt PNG (libpng: <libpng's message>)"
 Image read_png(const std::string& path);
 
+/// The same for a PNG already in memory (`size` bytes at `data`: a picture
+/// compiled into a program). Errors as read_png's, with `name` in place of
+/// "read_png: 'x.png'".
+Image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name);
+
 /// Writes an 8-bit RGBA PNG. The write is atomic: the data goes to
 /// "<path>.tmp.<pid>", which is renamed to `path` only when complete, so a failed
 /// write never leaves a half-written file at `path` (nor the temporary file).
