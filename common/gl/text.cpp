@@ -121,46 +121,6 @@ std::vector<std::uint32_t> code_points(const std::string& s) {
   return out;
 }
 
-// Window-pixel drawing: identity model-view, projection = the viewport in pixels.
-struct PixelSpace {
-  PixelSpace() {
-    GLint vp[4];
-    glGetIntegerv(GL_VIEWPORT, vp);
-    glPushAttrib(GL_ALL_ATTRIB_BITS);
-    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glLoadIdentity();
-    glOrtho(0, vp[2], 0, vp[3], -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
-    glLoadIdentity();
-    glDisable(GL_LIGHTING);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_TEXTURE_2D);
-    glDisable(GL_FOG);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
-    height = vp[3];
-  }
-  ~PixelSpace() {
-    glMatrixMode(GL_MODELVIEW);
-    glPopMatrix();
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glPopClientAttrib();
-    glPopAttrib();
-  }
-  PixelSpace(const PixelSpace&) = delete;
-  PixelSpace& operator=(const PixelSpace&) = delete;
-  int height = 0;
-};
-
 // --print-text (text.h): the strings drawn while recording is on.
 bool g_recording = false;
 std::vector<std::string>& recorded() {
@@ -219,6 +179,41 @@ std::string format_text(const char* format, ...) {
   if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
   va_end(again);
   return out;
+}
+
+PixelSpace::PixelSpace() {
+  GLint vp[4];
+  glGetIntegerv(GL_VIEWPORT, vp);
+  glPushAttrib(GL_ALL_ATTRIB_BITS);
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glLoadIdentity();
+  glOrtho(0, vp[2], 0, vp[3], -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  glLoadIdentity();
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_FOG);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+  height = vp[3];
+}
+
+PixelSpace::~PixelSpace() {
+  glMatrixMode(GL_MODELVIEW);
+  glPopMatrix();
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glPopClientAttrib();
+  glPopAttrib();
 }
 
 void draw_text_panel(int x, int y, const std::vector<std::string>& lines, Rgb colour) {

@@ -19,6 +19,19 @@ struct Rgb {
   float r, g, b;
 };
 
+/// Drawing in window pixels while it lives: the projection is the viewport in
+/// pixels (x right, y up from its bottom-left corner), the model-view the
+/// identity; lighting, depth test, culling and texturing off. Everything is
+/// restored when it ends (matrices pushed and popped, attributes too).
+class PixelSpace {
+ public:
+  PixelSpace();
+  ~PixelSpace();
+  PixelSpace(const PixelSpace&) = delete;
+  PixelSpace& operator=(const PixelSpace&) = delete;
+  int height = 0;  // of the viewport
+};
+
 /// Draws UTF-8 text with its top-left corner at window pixel (x, y), y counted
 /// down from the top edge. Uses the current viewport size; changes no GL state
 /// the caller can see. Code points the font lacks are drawn as '?'.
