@@ -108,18 +108,12 @@ void draw_blend(const State& s, const df::PlaneEvaluator& f2, double t, bool mor
   glDisable(GL_BLEND);
 }
 
-// What the view shows over the picture: the grid lines of f(t, .), A's features carried there.
-void draw_overlay(const State& s, const df::PlaneEvaluator& f2, double t) {
-  if (s.flag("grid_lines")) gllab::draw_deformed_grid(f2, t, 8, kLines);
-  if (s.flag("features")) gllab::draw_moved_points(f2, t, kA, kGreen, 6.f);
-}
-
 // The notes' "Deformation": face A with its features (left); A through f2 (right) with the
 // control grid the mouse moves, A's features carried by f2 (green) onto B's (red).
 void draw_deformation(const State& s, const df::PlaneEvaluator& f2) {
   const gllab::Panel left = gllab::enter_panel(0, 0, 2, 1, s.width, s.height);
   gllab::enter_unit_square(left.width, left.height);
-  draw_blend(s, f2, 0, true);
+  draw_picture(g_faces[0], f2, 0, false, s.integer("cells"));
   if (s.flag("features")) gllab::draw_moved_points(f2, 0, kA, kGreen, 6.f);
   const gllab::Panel right = gllab::enter_panel(1, 0, 2, 1, s.width, s.height);
   gllab::enter_unit_square(right.width, right.height);
@@ -140,7 +134,8 @@ void draw_morph(const State& s, const df::PlaneEvaluator& f2) {
   const double t = s.get("t");
   gllab::enter_unit_square(s.width, s.height, .12);
   draw_blend(s, f2, t, true);
-  draw_overlay(s, f2, t);
+  if (s.flag("grid_lines")) gllab::draw_deformed_grid(f2, t, 8, kLines);  // lines of f(t, .)
+  if (s.flag("features")) gllab::draw_moved_points(f2, t, kA, kGreen, 6.f);
   gllab::draw_text_panel(8, 8, {gllab::format_text("t = %.2f: at f(t, x) = (1 - t) x + t f2(x)",
       t), "the colour (1 - t) A(x) + t B(f2(x))"}, kText);
 }
