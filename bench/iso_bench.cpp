@@ -24,11 +24,9 @@
 //
 //   build-bench/bin/iso_bench [Google Benchmark flags, e.g. --benchmark_repetitions=3]
 #include <benchmark/benchmark.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
@@ -296,14 +294,7 @@ void print_summary(const fd::Grid3& g, const std::string& vtk_info, std::size_t 
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool color = isatty(STDOUT_FILENO) != 0;
-  for (int k = 1; k < argc; ++k) {
-    const std::string arg = argv[k];
-    if (arg.rfind("--benchmark_color=", 0) == 0) {
-      const std::string value = arg.substr(std::strlen("--benchmark_color="));
-      color = value == "true" || value == "yes" || value == "1" || (value == "auto" && color);
-    }
-  }
+  const bool color = gllab::bench::console_color(argc, argv);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 

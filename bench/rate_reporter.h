@@ -1,4 +1,4 @@
-// bench/rate_reporter.h — the console reporter of spline_bench and iso_bench:
+// bench/rate_reporter.h — the console reporter of spline_bench, iso_bench and ffd_bench:
 // it prints like Google Benchmark's and keeps each benchmark's rate (one of the
 // named counters; the median over repetitions when --benchmark_repetitions is
 // given), for the summary table each program prints after the run.
@@ -6,12 +6,30 @@
 
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>  // isatty
+
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace gllab::bench {
+
+/// Whether the console reporter colours its output, as Google Benchmark decides
+/// it: --benchmark_color=true|yes|1 or false|no|0, or auto (the default): when
+/// stdout is a terminal. Read before benchmark::Initialize takes the flags.
+inline bool console_color(int argc, char** argv) {
+  bool color = isatty(STDOUT_FILENO) != 0;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    if (arg.rfind("--benchmark_color=", 0) == 0) {
+      const std::string value = arg.substr(std::strlen("--benchmark_color="));
+      color = value == "true" || value == "yes" || value == "1" || (value == "auto" && color);
+    }
+  }
+  return color;
+}
 
 class RateReporter : public benchmark::ConsoleReporter {
  public:

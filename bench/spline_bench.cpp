@@ -13,7 +13,6 @@
 //
 //   build-bench/bin/spline_bench [Google Benchmark flags, e.g. --benchmark_filter=curve]
 #include <benchmark/benchmark.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -570,14 +569,10 @@ int main(int argc, char** argv) {
   // Two Google Benchmark flags this program reads too: the filter (only the
   // selected tasks are checked) and the colour (a custom reporter ignores it).
   std::string filter;
-  bool color = isatty(STDOUT_FILENO) != 0;
+  const bool color = gllab::bench::console_color(argc, argv);
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     if (arg.rfind("--benchmark_filter=", 0) == 0) filter = arg.substr(std::strlen("--benchmark_filter="));
-    if (arg.rfind("--benchmark_color=", 0) == 0) {
-      const std::string value = arg.substr(std::strlen("--benchmark_color="));
-      color = value == "true" || value == "yes" || value == "1" || (value == "auto" && color);
-    }
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;

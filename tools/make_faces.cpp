@@ -10,16 +10,14 @@
 // --features prints the feature points of both faces, to copy into a lab.
 // Errors: one line on stderr; exit 2 for bad arguments, 1 when a file
 // cannot be written (write_png is atomic: no half-written file is left).
-#include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cstddef>
-#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "deform/faces.h"
 #include "image/image.h"
 
@@ -91,22 +89,19 @@ int main(int argc, char** argv) {
     if (argv[i][0] == '-' && argv[i][1] == '-')
       return fail("unknown option '" + std::string(argv[i]) + "' (make_faces --help)", 2);
   if (argc != 4) return fail("need SIZE, OUT_A.png and OUT_B.png (make_faces --help)", 2);
-  const std::string text = argv[1];
-  char* end = nullptr;
-  errno = 0;
-  const long size = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() ||
-      std::isspace(static_cast<unsigned char>(text[0])))
-    return fail("SIZE: '" + text + "' is not a whole number", 2);
-  if (errno == ERANGE || size < 16 || size > 4096)
-    return fail("SIZE: " + text + " (must be 16..4096)", 2);
+  int size = 0;
   try {
-    const gllab::Image a = gllab::deform::face_picture(Face::kA, static_cast<int>(size));
-    const gllab::Image b = gllab::deform::face_picture(Face::kB, static_cast<int>(size));
+    size = gllab::cli::parse_count(argv[1], "SIZE", 16, 4096);
+  } catch (const gllab::cli::UsageError& e) {
+    return fail(e.what(), gllab::cli::kBadInput);
+  }
+  try {
+    const gllab::Image a = gllab::deform::face_picture(Face::kA, size);
+    const gllab::Image b = gllab::deform::face_picture(Face::kB, size);
     gllab::write_png(argv[2], a);
     gllab::write_png(argv[3], b);
   } catch (const std::exception& e) {
-    return fail(e.what(), 1);
+    return fail(e.what(), gllab::cli::kFailed);
   }
-  return 0;
+  return gllab::cli::kOk;
 }

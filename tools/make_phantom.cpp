@@ -9,13 +9,11 @@
 // round(255 d): air and the ventricles 0, brain 51, tumours 77, skull 255.
 // Errors: one line on stderr; exit 2 for bad arguments, 1 when the file
 // cannot be written.
-#include <cctype>
-#include <cerrno>
-#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 
+#include "cli.h"
 #include "field/phantom.h"
 #include "io/spline_json.h"
 #include "io/volume_nrrd.h"
@@ -47,15 +45,14 @@ int main(int argc, char** argv) {
   }
   if (argc != 3) return fail("need N and OUT.nrrd (make_phantom --help)", 2);
   const std::string text = argv[1];
-  char* end = nullptr;
-  errno = 0;
-  const long n = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() ||
-      std::isspace(static_cast<unsigned char>(text[0])))
-    return fail("N: '" + text + "' is not a whole number", 2);
-  if (errno == ERANGE || n < 2 || n > 1024) return fail("N: " + text + " (must be 2..1024)", 2);
+  int n = 0;
   try {
-    const gllab::field::Grid3 g = gllab::field::shepp_logan_phantom(static_cast<int>(n));
+    n = gllab::cli::parse_count(text, "N", 2, 1024);
+  } catch (const gllab::cli::UsageError& e) {
+    return fail(e.what(), gllab::cli::kBadInput);
+  }
+  try {
+    const gllab::field::Grid3 g = gllab::field::shepp_logan_phantom(n);
     gllab::io::write_nrrd_uint8(g, argv[2], 0, 1,
                                 "modified 3-D Shepp-Logan phantom, " + text +
                                     "^3 over [-1,1]^3, "

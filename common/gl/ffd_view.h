@@ -13,6 +13,7 @@
 #include "deform/ffd.h"
 #include "gl/text.h"
 #include "harness/lab.h"
+#include "mesh/indexed_mesh.h"
 
 namespace gllab {
 
@@ -25,7 +26,8 @@ deform::Lattice cube_lattice(const deform::Frame& frame, int count, int degree);
 std::vector<spline::Vec3> lattice_points(const deform::Lattice& lattice,
                                          const std::function<spline::Vec3(spline::Vec3)>& move);
 
-/// The lattice with the point list's points (as many as it has).
+/// The lattice with the point list's points instead of its own; throws
+/// std::invalid_argument naming both counts when they differ.
 deform::Lattice with_points(deform::Lattice lattice, const std::vector<spline::Vec3>& points);
 
 /// The lines between neighbouring control points, in all three directions,

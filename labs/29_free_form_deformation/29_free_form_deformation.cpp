@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "deform/fast_deform.h"
-#include "deform/ffd.h"
 #include "gl/ffd_view.h"
 #include "gl/gl.h"
 #include "gl/panels.h"
@@ -89,18 +88,17 @@ void draw_mesh(const gllab::IndexedMesh& m, const std::vector<float>& normals,
   glDisableClientState(GL_VERTEX_ARRAY);
 }
 
-// The teapot (deform/teapot.h, made again only when the resolution changes) through the
-// lattice of point list `list`: Bernstein (degree 0) or B-spline.
+// The teapot (deform/teapot.h) through the lattice of point list `list`: Bernstein (degree 0)
+// or B-spline. deform_mesh (ffd.h) computes it; deform_mesh_fast the same, 15 times faster.
 struct Deformed {
   df::Lattice lattice;
   df::DeformedMesh d;
-  double ms;  // how long deform_mesh took (shown in the window only)
+  double ms;  // how long the deformation took (shown in the window only)
 };
 Deformed deform(const State& s, const char* list, int degree, int resolution) {
   Deformed r{gllab::with_points(cube(degree), s.points(list)), {}, 0};
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
-  // deform_mesh (ffd.h) computes this; its fast layer the same, 15 times faster (fast_deform.h).
   r.d = df::deform_mesh_fast(r.lattice, gllab::cached_teapot(resolution));
   r.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return r;
