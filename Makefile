@@ -20,6 +20,7 @@
 #                    submission_bench (lab 05's four paths, Mtri/s and ratios),
 #                    iso_bench (marching cubes against VTK), ffd_bench (free-form
 #                    deformation of 10^6 vertices: textbook and fast layer),
+#                    space_bench (ray queries: scene octree, brute force, Embree),
 #                    then grade_bench (labgrade over every view: wall seconds);
 #                    flags for spline_bench go in BENCH_ARGS, e.g.
 #                    make bench BENCH_ARGS=--benchmark_filter=curve
@@ -83,11 +84,12 @@ clang:
 # A separate build directory: the normal build never needs the peers (bench/README.md).
 bench:
 	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DGLLAB_BENCH=ON
-	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench iso_bench ffd_bench grade_bench
+	cmake --build $(BENCH_BUILD) -j $(JOBS) --target spline_bench submission_bench iso_bench ffd_bench space_bench grade_bench
 	$(BENCH_BUILD)/bin/spline_bench $(BENCH_ARGS)
 	$(BENCH_BUILD)/bin/submission_bench $(SUBMISSION_BENCH_ARGS)
 	$(BENCH_BUILD)/bin/iso_bench $(ISO_BENCH_ARGS)
 	$(BENCH_BUILD)/bin/ffd_bench $(FFD_BENCH_ARGS)
+	$(BENCH_BUILD)/bin/space_bench $(SPACE_BENCH_ARGS)
 	$(BENCH_BUILD)/bin/grade_bench $(GRADE_BENCH_ARGS)
 
 clean:

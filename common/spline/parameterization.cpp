@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 
+#include "space/symmetric_eigen.h"
 #include "spline/errors.h"
 
 namespace gllab::spline {
@@ -18,57 +19,9 @@ constexpr double kPi = 3.14159265358979323846;
 /// covariance is inverted: the points then span only a plane or a line.
 constexpr double kRankTolerance = 1e-12;
 
-/// Jacobi sweeps for a 3 x 3 symmetric matrix; it converges in far fewer.
-constexpr int kMaxJacobiSweeps = 50;
-
 using Matrix3 = double[3][3];
 
 double component(Vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
-
-/// Eigen-decomposition of a symmetric 3 x 3 matrix by the cyclic Jacobi method
-/// (Numerical Recipes, 3rd ed., §11.1): rotate away one off-diagonal entry at
-/// a time, A <- J^T A J, until A is diagonal. On return A holds the
-/// eigenvalues on its diagonal and the columns of V the eigenvectors.
-void jacobi_eigen(Matrix3& A, Matrix3& V) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) V[i][j] = i == j ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < kMaxJacobiSweeps; ++sweep) {
-    const double off = A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
-    const double on = A[0][0] * A[0][0] + A[1][1] * A[1][1] + A[2][2] * A[2][2];
-    if (off == 0 || off <= 1e-32 * on) return;
-    for (int p = 0; p < 2; ++p) {
-      for (int q = p + 1; q < 3; ++q) {
-        if (A[p][q] == 0) continue;
-        // The rotation angle that zeroes A[p][q]: tan of it is t, the smaller
-        // root of t^2 + 2 theta t - 1 = 0 (Numerical Recipes eq. 11.1.8).
-        const double theta = (A[q][q] - A[p][p]) / (2 * A[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        Matrix3 J = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        J[p][p] = c;
-        J[q][q] = c;
-        J[p][q] = s;
-        J[q][p] = -s;
-        Matrix3 AJ = {}, JtAJ = {}, VJ = {};
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) {
-              AJ[i][j] += A[i][k] * J[k][j];
-              VJ[i][j] += V[i][k] * J[k][j];
-            }
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) JtAJ[i][j] += J[k][i] * AJ[k][j];
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            A[i][j] = JtAJ[i][j];
-            V[i][j] = VJ[i][j];
-          }
-        A[p][q] = A[q][p] = 0;  // exactly zero by the choice of t
-      }
-    }
-  }
-}
 
 /// u^T M v: the inner product of the metric M (3 x 3, row by row).
 double metric_dot(const std::vector<double>& M, Vec3 u, Vec3 v) {
@@ -122,9 +75,9 @@ std::vector<double> nielson_metric(const std::vector<Vec3>& points) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) C[i][j] += component(e, i) * component(e, j) / N;
   }
-  Matrix3 V;
-  jacobi_eigen(C, V);
-  const double largest = std::max({C[0][0], C[1][1], C[2][2]});
+  // The eigen-decomposition by the cyclic Jacobi method (space/symmetric_eigen.h).
+  const space::SymmetricEigen e = space::symmetric_eigen(C);
+  const double largest = e.values[0];
   if (!(largest > 0))
     fail(ErrorCode::kCoincidentPoints,
          what + ": all " + std::to_string(points.size()) + " points coincide at " + num(points[0]) +
@@ -132,10 +85,10 @@ std::vector<double> nielson_metric(const std::vector<Vec3>& points) {
          {{"points", points.size()}, {"P[0]", points[0]}});
   std::vector<double> M(9, 0.0);
   for (int k = 0; k < 3; ++k) {
-    const double lambda = C[k][k];
+    const double lambda = e.values[k];
     if (lambda <= kRankTolerance * largest) continue;  // a direction the points do not span
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) M[static_cast<std::size_t>(3 * i + j)] += V[i][k] * V[j][k] / lambda;
+      for (int j = 0; j < 3; ++j) M[static_cast<std::size_t>(3 * i + j)] += e.vectors[i][k] * e.vectors[j][k] / lambda;
   }
   return M;
 }
