@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "space/internal.h"
+
 namespace gllab::space {
 
 bool ray_triangle(const Ray& ray, Vec3 a, Vec3 b, Vec3 c, double& t, double& u, double& v) {
@@ -31,19 +33,6 @@ bool ray_triangle(const Ray& ray, Vec3 a, Vec3 b, Vec3 c, double& t, double& u, 
 }
 
 namespace {
-
-void validate(const IndexedMesh& mesh, const char* what) {
-  const std::size_t vertices = mesh.vertex_count();
-  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
-    if (mesh.indices[i] >= vertices)
-      throw std::invalid_argument(std::string(what) + ": index " + std::to_string(i) + " = " +
-                                  std::to_string(mesh.indices[i]) + " is out of range (" +
-                                  std::to_string(vertices) + " vertices)");
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!std::isfinite(mesh.positions[i]))
-      throw std::invalid_argument(std::string(what) + ": vertex " + std::to_string(i / 3) +
-                                  " has a coordinate that is not finite");
-}
 
 Vec3 vertex(const IndexedMesh& m, std::size_t triangle, int corner) {
   const float* p = &m.positions[3 * std::size_t(m.indices[3 * triangle + corner])];
@@ -123,7 +112,7 @@ struct SceneOctree::Impl {
 };
 
 SceneOctree::SceneOctree(const IndexedMesh& mesh, SceneOctreeOptions options) {
-  validate(mesh, "SceneOctree");
+  internal::require_valid_mesh(mesh, "SceneOctree");
   if (options.max_depth < 0 || options.max_depth > 12)
     throw std::invalid_argument("SceneOctree: max_depth = " + std::to_string(options.max_depth) +
                                 " (must be 0..12)");

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "space/internal.h"
+
 namespace gllab::space {
 namespace {
 
@@ -110,16 +112,7 @@ std::string open_edge(const IndexedMesh& mesh) {
 
 VoxelGrid voxelize(const IndexedMesh& mesh, Box3 cube, int n, VoxelizeStats* stats) {
   check_n("voxelize", n);
-  const std::size_t vertices = mesh.vertex_count();
-  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
-    if (mesh.indices[i] >= vertices)
-      throw std::invalid_argument("voxelize: index " + std::to_string(i) + " = " +
-                                  std::to_string(mesh.indices[i]) + " is out of range (" +
-                                  std::to_string(vertices) + " vertices)");
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!std::isfinite(mesh.positions[i]))
-      throw std::invalid_argument("voxelize: vertex " + std::to_string(i / 3) +
-                                  " has a coordinate that is not finite");
+  internal::require_valid_mesh(mesh, "voxelize");
   const std::string open = open_edge(mesh);
   if (!open.empty()) throw std::invalid_argument("voxelize: the mesh is not closed: " + open);
   VoxelGrid grid(cube, n);

@@ -5,16 +5,17 @@
 // In 3-D the BSP tree sorts polygons by depth: drawn far to near with the depth test off,
 // near pieces paint over far ones and the picture equals the z-buffer's (Fuchs, Kedem and
 // Naylor 1980).
-// Notice: the BSP tree needs fewer cells than the quadtree for the same scene. The three
-//   rectangles of painter overlap in a cycle that no order of whole polygons can draw:
-//   the BSP tree splits them.
+// Notice: the BSP tree needs fewer regions than the quadtree has cells, but cuts objects that
+//   straddle its lines. The three sticks of painter overlap in a cycle that no order of
+//   whole polygons can draw: the BSP tree splits them.
 // Try: in painter, step through the order with [s]: which piece is drawn last, and why?
 //   In pca, drag points across the split line: how far must e1 turn to move the split?
-// Keys: [s]/[S] step the drawing order  [b] plane rule  [o] order numbers on/off
+// Keys: [s]/[S] step the drawing order  [b]/[B] plane rule  [o] order numbers on/off
 //   left-drag points  right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
 // Views: quadtree_vs_bsp, pca, painter, split_rules
 // Reference: reference_images/31_quadtrees_and_bsp_trees__*.png
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -98,7 +99,9 @@ void draw_quadtree_vs_bsp(const State& s) {
   gllab::draw_text_panel(8, s.height - 52, {
       format_text("quadtree: %zu cells, depth %d, %zu with more than one object",
                   quad.leaf_count(), quad.depth(), quad.crowded_leaves()),
-      format_text("BSP tree (PCA): %zu nodes, depth %d, %zu splits", bsp.stats().nodes,
+      format_text("BSP tree (PCA): %zu regions, depth %d, %zu splits",
+                  std::size_t(std::count_if(bsp.nodes().begin(), bsp.nodes().end(),
+                                            [](const sp::BspNode& n) { return n.leaf; })),
                   bsp.stats().depth, bsp.stats().splits)}, kText);
 }
 
