@@ -19,8 +19,11 @@
 //    that both sides get objects); e_2, then e_3 when the centres coincide
 //    along e_1; the own-plane rule when they coincide along all three.
 // Recursion stops when all polygons of a node share one object id: each
-// region then holds at most one object. A node keeps the polygons lying in
-// its plane.
+// leaf region then holds one object. A node keeps the polygons lying in its
+// plane. Known limit: when a plane (a PCA plane that falls back to the own
+// plane in the 2-D case) leaves several objects all in the node's plane,
+// those objects stay together in that node, so "at most one object per
+// region" is not guaranteed for every scene (it holds for lab 31's).
 #pragma once
 
 #include <cstddef>
