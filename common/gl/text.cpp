@@ -138,6 +138,7 @@ void bitmap_text(int x, int y_top, int viewport_height, const std::string& utf8,
   glWindowPos2i(x, viewport_height - y_top - f->height);
   for (std::uint32_t u : code_points(utf8)) {
     auto it = f->glyph_of.find(u);
+    if (it == f->glyph_of.end() && u == 0x222A) it = f->glyph_of.find('U');  // ∪: the font has ∩ only
     if (it == f->glyph_of.end()) it = f->glyph_of.find('?');
     const int g = it == f->glyph_of.end() ? 0 : it->second;
     glBitmap(kGlyphWidth, f->height, 0, 0, kGlyphWidth, 0, &f->rows_bottom_up[g * f->height]);

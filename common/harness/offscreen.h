@@ -15,8 +15,8 @@ namespace gllab {
 
 class OffscreenContext {
  public:
-  /// Creates a compatibility-profile context with RGBA8 colour and a 24-bit
-  /// depth buffer, makes it current and checks that GL answers. Throws
+  /// Creates a compatibility-profile context with RGBA8 colour, a 24-bit
+  /// depth buffer and an 8-bit stencil buffer, makes it current and checks that GL answers. Throws
   /// std::runtime_error with one line saying what failed.
   OffscreenContext(int width, int height);
   ~OffscreenContext();

@@ -6,6 +6,7 @@
 //    silently does nothing. A null GL_RENDERER is the symptom we check for.
 //  - Without OSMESA_DEPTH_BITS there is silently no depth buffer, and the core
 //    profile rejects glBegin: ask for 24 bits and the compatibility profile.
+//    The same holds for OSMESA_STENCIL_BITS: asked for 8, Mesa 22.3 gives 8.
 #include "harness/offscreen.h"
 
 #include <GL/osmesa.h>
@@ -44,12 +45,14 @@ OffscreenContext::OffscreenContext(int width, int height) : impl_(std::make_uniq
     throw std::runtime_error(
         "GL_RENDERER is null: GL calls are not reaching OSMesa (is libGL linked before libOSMesa?)");
   }
-  GLint depth_bits = 0;
+  GLint depth_bits = 0, stencil_bits = 0;
   glGetIntegerv(GL_DEPTH_BITS, &depth_bits);
-  if (depth_bits < 24) {
+  glGetIntegerv(GL_STENCIL_BITS, &stencil_bits);  // 8 on Mesa 22.3 (lab 33's CSG needs them)
+  if (depth_bits < 24 || stencil_bits < 8) {
     OSMesaDestroyContext(impl_->context);
     throw std::runtime_error("OSMesa context has " + std::to_string(depth_bits) +
-                             " depth bits, 24 needed");
+                             " depth bits and " + std::to_string(stencil_bits) +
+                             " stencil bits; 24 and 8 needed");
   }
 }
 

@@ -361,7 +361,8 @@ int main(int argc, char** argv) {
 
   int glut_argc = 1;  // our options are parsed already; GLUT sees none of them
   glutInit(&glut_argc, argv);
-  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
+  // A stencil buffer too: lab 33's CSG counts surfaces in it (8 bits on llvmpipe).
+  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH | GLUT_STENCIL);
   glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
   glutInitWindowSize(window.state->width, window.state->height);
   glutCreateWindow(window.lab.title.c_str());
