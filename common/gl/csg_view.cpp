@@ -14,6 +14,10 @@ namespace gllab {
 namespace sp = space;
 using spline::Vec3;
 
+std::string literal_name(const sp::CsgTree& tree, const sp::Literal& l) {
+  return (l.complement ? "−" : "") + tree.leaves()[std::size_t(l.primitive)].name;
+}
+
 Rgb primitive_colour(int id) {
   // Whole 8-bit values, so that GL's colour and the ray cast's agree exactly.
   static const int kPalette[8][3] = {{242, 158, 64},  {89, 166, 242}, {115, 217, 102},

@@ -16,6 +16,17 @@
 
 namespace gllab {
 
+/// The passes of one frame, counted so that a view can stop after pass `limit`: an
+/// algorithm calls next("what it did") after each pass and returns when it says false.
+struct Passes {
+  int limit = 1 << 30, done = 0;
+  std::string what;  // what the last pass did
+  bool next(const std::string& text) { return what = text, ++done < limit; }
+};
+
+/// "cyl x" for a literal of primitive "cyl x", "−cyl x" for its complement.
+std::string literal_name(const space::CsgTree& tree, const space::Literal& literal);
+
 /// The colour of primitive `id` (a palette of eight, repeated).
 Rgb primitive_colour(int id);
 

@@ -19,7 +19,6 @@
 
 #include "gl/csg_view.h"
 #include "gl/gl.h"
-#include "gl/panels.h"
 #include "gl/space_view.h"
 #include "gl/spline_draw.h"
 #include "harness/lab.h"
@@ -28,7 +27,8 @@
 namespace {
 
 namespace sp = gllab::space;
-using gllab::State, gllab::kOrbit, gllab::format_text, gllab::Panel;
+using gllab::State, gllab::kOrbit, gllab::format_text, gllab::Panel, gllab::Passes;
+using gllab::literal_name;
 
 // Lab data (edit me) -------------------------------------------------------
 constexpr double kBox = 1.6, kSphere = 1.05, kHole = 0.45, kLength = 2.4;  // the classic object
@@ -44,21 +44,13 @@ sp::NamedTree make_tree(const State& s) {
   const int box = t.box({kBox, kBox, kBox}, "box");
   const int ball =
       t.transform(sp::Affine::translate(s.points("S")[0]), t.sphere(kSphere, "sphere"));
-  const int body = op == 0   ? t.intersect(box, ball)
-                   : op == 1 ? t.unite(box, ball)
-                             : t.subtract(box, ball);
+  const int body = op == 0 ? t.intersect(box, ball)
+                 : op == 1 ? t.unite(box, ball) : t.subtract(box, ball);
   const int x = t.transform(sp::Affine::rotate({0, 1, 0}, 90), t.cylinder(kHole, kLength, "cyl x"));
   const int y = t.transform(sp::Affine::rotate({1, 0, 0}, 90), t.cylinder(kHole, kLength, "cyl y"));
   t.subtract(body, t.unite(t.unite(x, y), t.cylinder(kHole, kLength, "cyl z")));
   return n;
 }
-
-// The passes of one frame, counted so that a view can stop after pass `limit`.
-struct Passes {
-  int limit = 1 << 30, done = 0;
-  std::string what;  // what the last pass did
-  bool next(const std::string& text) { return what = text, ++done < limit; }
-};
 
 // Draws a primitive's faces: 1 the front ones (back ones culled), -1 the back ones, 0 all.
 void faces(const sp::CsgTree& t, int primitive, int which) {
@@ -67,20 +59,16 @@ void faces(const sp::CsgTree& t, int primitive, int which) {
   gllab::draw_csg_primitive(t.leaves()[std::size_t(primitive)]);
 }
 int side(const sp::Literal& l) { return l.complement ? -1 : 1; }  // −b shows b's inside
-std::string name(const sp::CsgTree& t, const sp::Literal& l) {
-  return (l.complement ? "−" : "") + t.leaves()[std::size_t(l.primitive)].name;
-}
 
 // Merge: the depth becomes min(depth, R), and R the depth. GL has one depth buffer; the
 // second that Goldfeather's algorithm needs for the result is R, in memory. Where the new
 // surface won, stencil bit 4 is set, and the literals are shaded there with depth EQUAL.
 void merge(const sp::CsgTree& t, const sp::Product& lits, std::vector<GLuint>& R, bool lit) {
-  GLint v[4];
+  GLint v[4];  // the viewport: x, y, width, height
   glGetIntegerv(GL_VIEWPORT, v);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_TRUE); glDepthFunc(GL_LESS);  // R is written where it is nearer
-  glEnable(GL_STENCIL_TEST);
-  glStencilMask(4);
+  glEnable(GL_STENCIL_TEST), glStencilMask(4);
   glStencilFunc(GL_ALWAYS, 4, 0); glStencilOp(GL_KEEP, GL_REPLACE, GL_KEEP);  // else: won
   glWindowPos2i(v[0], v[1]);
   glDrawPixels(v[2], v[3], GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, R.data());
@@ -93,8 +81,7 @@ void merge(const sp::CsgTree& t, const sp::Product& lits, std::vector<GLuint>& R
     const gllab::Rgb c = gllab::primitive_colour(l.primitive);
     glColor3f(c.r, c.g, c.b), faces(t, l.primitive, side(l));
   }
-  glStencilMask(0xff);
-  glDepthMask(GL_TRUE);  // glClear obeys the write masks: leave them open
+  glStencilMask(0xff), glDepthMask(GL_TRUE);  // glClear obeys the write masks: leave them open
 }
 
 // Goldfeather: for every literal a of a product, a's visible faces, kept where they are inside
@@ -102,34 +89,33 @@ void merge(const sp::CsgTree& t, const sp::Product& lits, std::vector<GLuint>& R
 void goldfeather(const sp::CsgTree& t, const sp::Product& prod, std::vector<GLuint>& R,
                  Passes& p, bool lit) {
   for (const sp::Literal& a : prod) {
+    const std::string an = literal_name(t, a);
     glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDisable(GL_STENCIL_TEST);
-    glDepthFunc(GL_LESS);
+    glDisable(GL_STENCIL_TEST), glDepthFunc(GL_LESS);
     faces(t, a.primitive, side(a));  // the depth: a's front faces (back faces for −a)
-    if (!p.next(name(t, a) + ": its faces into the depth buffer")) return;
-    glEnable(GL_STENCIL_TEST);
-    glDepthMask(GL_FALSE);
+    if (!p.next(an + ": its faces into the depth buffer")) return;
+    glEnable(GL_STENCIL_TEST), glDepthMask(GL_FALSE);
     for (const sp::Literal& b : prod) {
       if (b.primitive == a.primitive) continue;
       glStencilMask(1);  // bit 1 flips for each face of b in front of a's faces
       glStencilFunc(GL_ALWAYS, 0, 0); glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
       glDepthFunc(GL_LESS);
       faces(t, b.primitive, 0);
-      if (!p.next(name(t, a) + ": parity of " + name(t, b) + "'s faces in front")) return;
+      if (!p.next(an + ": parity of " + literal_name(t, b) + "'s faces in front")) return;
       glStencilMask(2);  // bit 2 (invalid) where the parity is wrong: even for b, odd for −b
       glStencilFunc(GL_EQUAL, b.complement ? 3 : 2, 1);
       glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
       glDepthFunc(GL_ALWAYS);
       gllab::draw_screen_quad(0.5);
       glStencilMask(1); glClear(GL_STENCIL_BUFFER_BIT);  // bit 1 back to 0, bit 2 kept
-      if (!p.next(name(t, a) + ": outside " + name(t, b) + " is invalid")) return;
+      if (!p.next(an + ": outside " + literal_name(t, b) + " is invalid")) return;
     }
     glStencilFunc(GL_EQUAL, 2, 2); glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the invalid ...
     glDepthMask(GL_TRUE); glDepthFunc(GL_ALWAYS);
     gllab::draw_screen_quad(1.0);  // ... go to the far plane
     merge(t, {a}, R, lit);
-    if (!p.next(name(t, a) + ": merged into R, shaded where it won")) return;
+    if (!p.next(an + ": merged into R, shaded where it won")) return;
   }
 }
 
@@ -146,8 +132,7 @@ void scs(const sp::CsgTree& t, const sp::Product& prod, std::vector<GLuint>& R, 
   glDepthFunc(GL_GREATER);  // the farthest front face of the intersected primitives
   for (const sp::Literal& l : plus) faces(t, l.primitive, 1);
   if (!p.next("the farthest front face of the intersected")) return;
-  glEnable(GL_STENCIL_TEST);
-  glStencilMask(1);
+  glEnable(GL_STENCIL_TEST), glStencilMask(1);
   for (std::size_t round = 1; round <= minus.size(); ++round)
     for (const sp::Literal& y : minus) {
       glDepthMask(GL_FALSE); glDepthFunc(GL_LESS);  // bit 1: y's front face is in front
@@ -157,7 +142,7 @@ void scs(const sp::CsgTree& t, const sp::Product& prod, std::vector<GLuint>& R, 
       glStencilFunc(GL_EQUAL, 1, 1); glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       faces(t, y.primitive, -1);
       glClear(GL_STENCIL_BUFFER_BIT);
-      if (!p.next("through " + name(t, y) + ", round " + std::to_string(round))) return;
+      if (!p.next("through " + literal_name(t, y) + ", round " + std::to_string(round))) return;
     }
   glStencilMask(0xff);  // the stencil counts the intersected back faces behind the depth
   glDepthMask(GL_FALSE); glDepthFunc(GL_GEQUAL);
@@ -173,55 +158,66 @@ void scs(const sp::CsgTree& t, const sp::Product& prod, std::vector<GLuint>& R, 
   p.next("merged into R, shaded where it won");
 }
 
-// The tree in the current viewport by either algorithm, product by product.
-std::size_t draw_csg(const sp::CsgTree& t, bool use_scs, Passes& p, bool lit) {
-  GLint v[4];
-  glGetIntegerv(GL_VIEWPORT, v);
-  std::vector<GLuint> R(std::size_t(v[2]) * v[3], 0xffffffffu);  // the result: far everywhere
+// The tree by either algorithm, product by product, in the window (whole, lit) or in its
+// top left quarter (flat colours); returns the caption's first lines.
+std::vector<std::string> draw_csg(const State& s, const sp::NamedTree& t, bool use_scs,
+                                  Passes& p, bool whole) {
+  const Panel mine = gllab::enter_panel(0, 0, whole ? 1 : 2, whole ? 1 : 2, s.width, s.height);
+  gllab::space_camera(s, mine.width, mine.height, 1.6);
+  std::vector<GLuint> R(std::size_t(mine.width) * mine.height, 0xffffffffu);  // all far
   glEnable(GL_DEPTH_TEST), glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);  // −b lit inside
-  const std::vector<sp::Product> sop = sp::sum_of_products(t);
+  const std::vector<sp::Product> sop = sp::sum_of_products(t.tree);
   for (const sp::Product& prod : sop) {
-    if (use_scs) scs(t, prod, R, p, lit);
-    else goldfeather(t, prod, R, p, lit);
+    if (use_scs) scs(t.tree, prod, R, p, whole);
+    else goldfeather(t.tree, prod, R, p, whole);
     if (p.done >= p.limit) break;
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // as they were, if a pass stopped early
   glStencilMask(0xff); glDepthMask(GL_TRUE); glDepthFunc(GL_LESS);
   glDisable(GL_STENCIL_TEST), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
-  return sop.size();
+  return {format_text("tree %d: %s", s.integer("tree"), t.formula.c_str()),
+          format_text("%s: %zu products, %d passes", use_scs ? "SCS" : "Goldfeather", sop.size(),
+                      p.done)};
+}
+Panel quarter(const State& s, int col, int row) {
+  return gllab::enter_panel(col, row, 2, 2, s.width, s.height);
 }
 
-// goldfeather and scs: the picture, lit. passes: the depth (left) and stencil (right) buffers
-// after pass k. ray_cast: the picture in flat colours beside the core's ray cast, the heat map.
-void draw_view(const State& s) {
-  const sp::NamedTree tree = make_tree(s);
-  const bool whole = s.view() == "goldfeather" || s.view() == "scs";
-  const bool use_scs = whole ? s.view() == "scs" : s.flag("scs");
-  const int w = s.width, h = s.height;
-  Passes p;
-  if (s.view() == "passes") p.limit = s.integer("pass");
-  const Panel mine = gllab::enter_panel(0, 0, whole ? 1 : 2, whole ? 1 : 2, w, h);
-  gllab::space_camera(s, mine.width, mine.height, 1.6);
-  const std::size_t products = draw_csg(tree.tree, use_scs, p, whole);
-  std::vector<std::string> lines{
-      format_text("tree %d: %s", s.integer("tree"), tree.formula.c_str()),
-      format_text("%s: %zu products, %d passes", use_scs ? "SCS" : "Goldfeather", products,
-                  p.done)};
-  if (s.view() == "passes") {
-    gllab::show_depth_and_stencil(mine, gllab::enter_panel(1, 0, 2, 2, w, h));
-    lines.push_back(p.what + (p.done < p.limit ? " (the last pass)" : ""));
-  } else if (s.view() == "ray_cast") {
-    const Panel truth = gllab::enter_panel(1, 0, 2, 2, w, h);
-    const Panel heat = gllab::enter_panel(0, 1, 2, 2, w, h);
-    const gllab::Comparison c = gllab::compare_with_ray_cast(tree.tree, kClear, mine, truth, heat);
-    lines.insert(lines.end(), {"right: ray cast (Roth 1982); below: heat map",
-                               format_text("%lld pixels differ, %lld by a 1-pixel shift,",
-                                           c.differing_pixels, c.shifted_pixels()),
-                               format_text("unexplained: %lld", c.mismatched_pixels)});
-  }
-  gllab::leave_panels(w, h);
-  if (whole && s.integer("tree") == 0) gllab::draw_control_points(s, "S", {1, 1, .3f}, 7.f);
-  gllab::draw_csg_caption(tree.tree, lines, w, h);
+// goldfeather, scs: the picture, lit.
+void draw_picture(const State& s, bool use_scs) {
+  const sp::NamedTree t = make_tree(s);
+  Passes p;  // all of them
+  const std::vector<std::string> lines = draw_csg(s, t, use_scs, p, true);
+  if (s.integer("tree") == 0) gllab::draw_control_points(s, "S", {1, 1, .3f}, 7.f);
+  gllab::draw_csg_caption(t.tree, lines, s.width, s.height);
+}
+void draw_goldfeather(const State& s) { draw_picture(s, false); }
+void draw_scs(const State& s) { draw_picture(s, true); }
+
+// passes: the depth (left) and stencil (right) buffers after pass k, and what it did.
+void draw_passes(const State& s) {
+  const sp::NamedTree t = make_tree(s);
+  Passes p{s.integer("pass"), 0, {}};  // stop after pass k
+  std::vector<std::string> lines = draw_csg(s, t, s.flag("scs"), p, false);
+  gllab::show_depth_and_stencil(quarter(s, 0, 0), quarter(s, 1, 0));
+  lines.push_back(p.what + (p.done < p.limit ? " (the last pass)" : ""));
+  gllab::leave_panels(s.width, s.height);
+  gllab::draw_csg_caption(t.tree, lines, s.width, s.height);
+}
+
+// ray_cast: the picture in flat colours beside the core's ray cast, and their heat map.
+void draw_ray_cast(const State& s) {
+  const sp::NamedTree t = make_tree(s);
+  Passes p;  // all of them
+  std::vector<std::string> lines = draw_csg(s, t, s.flag("scs"), p, false);
+  const gllab::Comparison c = gllab::compare_with_ray_cast(t.tree, kClear, quarter(s, 0, 0),
+                                                           quarter(s, 1, 0), quarter(s, 0, 1));
+  lines.insert(lines.end(), {"right: ray cast (Roth 1982); below: heat map",
+                             format_text("%lld pixels differ, %lld by a 1-pixel shift,",
+                                         c.differing_pixels, c.shifted_pixels()),
+                             format_text("unexplained: %lld", c.mismatched_pixels)});
+  gllab::leave_panels(s.width, s.height);
+  gllab::draw_csg_caption(t.tree, lines, s.width, s.height);
 }
 
 void init() { glClearColor(kClear.r, kClear.g, kClear.b, 1.f); }
@@ -233,10 +229,10 @@ gllab::Lab gllab::define_lab() {
   gllab::Lab lab{
       "33_csg_stencil",
       "lab 33 · CSG with the stencil buffer",
-      {{"goldfeather", "the tree by Goldfeather's parity counting, lit", draw_view, kOrbit},
-       {"scs", "the tree by SCS (convex primitives), lit", draw_view, kOrbit},
-       {"passes", "the depth and stencil buffers after pass k", draw_view, kOrbit},
-       {"ray_cast", "stencil CSG beside the exact ray cast, with a heat map", draw_view, kOrbit}},
+      {{"goldfeather", "the tree by Goldfeather's parity counting, lit", draw_goldfeather, kOrbit},
+       {"scs", "the tree by SCS (convex primitives), lit", draw_scs, kOrbit},
+       {"passes", "the depth and stencil buffers after pass k", draw_passes, kOrbit},
+       {"ray_cast", "stencil CSG beside the exact ray cast, a heat map", draw_ray_cast, kOrbit}},
       {{"tree", 0, 0, double(sp::csg_catalogue().size() - 1), "0 the classic object, 1.. others"},
        {"op", 0, 0, 2, "tree 0's operator between box and sphere: 0 ∩, 1 ∪, 2 −"},
        {"pass", 3, 1, 400, "passes: stop after this pass"},
