@@ -297,9 +297,16 @@ void use_viewport(const Panel& p) {
 }  // namespace
 
 void draw_csg_caption(const sp::CsgTree& tree, const std::vector<std::string>& lines, int width,
-                      int height) {
-  draw_csg_diagram(tree, width - 200, 8, 192, 130);
-  draw_text_panel(8, height - 8 - 16 * int(lines.size()), lines, {1, 1, 1});
+                      int height, bool quarter) {
+  const int text_height = 16 * int(lines.size());
+  if (quarter) {
+    draw_csg_diagram(tree, width / 2 + 8, height / 2 + 8, width / 2 - 16,
+                     height / 2 - 24 - text_height);
+    draw_text_panel(8, height - 8 - text_height, lines, {1, 1, 1});
+  } else {
+    draw_csg_diagram(tree, width - 200, 8, 192, 130);
+    draw_text_panel(8, height - 8 - text_height, lines, {1, 1, 1});
+  }
 }
 
 void show_depth_and_stencil(const Panel& panel, const Panel& stencil) {

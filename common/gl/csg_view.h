@@ -65,9 +65,10 @@ Image read_viewport();
 Image depth_picture();
 Image stencil_picture();
 
-/// The tree's diagram in the window's top right corner and `lines` of text at its bottom left.
+/// The tree's diagram and `lines` of text: the diagram in the window's top right corner and
+/// the text at its bottom left, or both in the bottom right quarter (quarter = true).
 void draw_csg_caption(const space::CsgTree& tree, const std::vector<std::string>& lines,
-                      int width, int height);
+                      int width, int height, bool quarter = false);
 
 /// Reads the depth and stencil buffers of panel `depth`, then draws them as depth_picture()
 /// there and as stencil_picture() in panel `stencil`.

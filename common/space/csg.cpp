@@ -826,6 +826,29 @@ const std::vector<NamedTree>& csg_catalogue() {
                      t.transform(Affine::translate({0.5, 0, 0}), t.cylinder(0.25, 1.6, "cyl z")));
       t.unite(left, right);
     }
+    // Sieves: box ∩ sphere minus thin cylinders through the centre, one product of 4, 8 and
+    // 16 primitives (the frame-time benchmark's trees): the axes, then the face diagonals,
+    // then the body diagonals and one off-centre bore.
+    const std::vector<Vec3> bores = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},   {1, 1, 0},  {1, 0, 1},
+                                     {0, 1, 1},  {1, -1, 0}, {1, 0, -1},  {0, 1, -1}, {1, 1, 1},
+                                     {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+    for (std::size_t count : {2u, 6u, 14u}) {
+      const std::string name = "sieve " + std::to_string(count + 2);
+      const std::string formula = "(box ∩ sphere) − " + std::to_string(count) + " bores";
+      CsgTree& t = add(name.c_str(), formula.c_str());
+      const int body = t.intersect(t.box({1.6, 1.6, 1.6}, "box"), t.sphere(1.05, "sphere"));
+      int holes = -1;
+      for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 d = k < bores.size() ? bores[k] : Vec3{0, 0, 1};
+        const Vec3 axis = cross(Vec3{0, 0, 1}, d);
+        const double angle = std::acos(d.z / length(d)) * 180 / M_PI;
+        Affine place = length(axis) > 0 ? Affine::rotate(axis, angle) : Affine{};
+        if (k >= bores.size()) place = Affine::translate({0.45, 0.45, 0});  // off the centre
+        const int bore = t.transform(place, t.cylinder(0.12, 2.4, "bore " + std::to_string(k + 1)));
+        holes = holes < 0 ? bore : t.unite(holes, bore);
+      }
+      t.subtract(body, holes);
+    }
     return out;
   }();
   return trees;

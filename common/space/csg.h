@@ -137,12 +137,13 @@ struct SpanEnd {
   Vec3 normal{0, 0, 0};
 };
 struct Span {
-  SpanEnd in, out;  // in.t <= out.t; in.t may be -inf-like (the ray starts inside): see below
+  SpanEnd in, out;  // in.t < out.t
 };
 
 /// The parts of the ray origin + t·direction, t in [t_min, t_max], inside the solid, sorted
 /// and disjoint (spans that touch are merged). Each primitive's convex interval is combined
-/// by the tree's operators; a span of zero length is dropped.
+/// by the tree's operators; a span of zero length is dropped. A span cut by t_min (the ray
+/// starts inside) or by t_max has that end at t_min or t_max with primitive -1, normal 0.
 std::vector<Span> ray_spans(const CsgTree& tree, Vec3 origin, Vec3 direction,
                             double t_min = 0, double t_max = 1e300);
 
@@ -212,8 +213,10 @@ struct NamedTree {
   CsgTree tree;
 };
 /// The trees lab 33 shows and the tests check: [0] the classic box ∩ sphere minus three
-/// cylinders, then at least ten more, with nested differences, transforms under operators,
-/// every shape, non-uniform scales and rotations. All fit in the cube [-1.2, 1.2]^3.
+/// cylinders, then twelve more, with nested differences, transforms under operators, every
+/// shape, non-uniform scales and rotations, then "sieve 4", "sieve 8" and "sieve 16" (one
+/// product of 4, 8 and 16 primitives, for the benchmark). All fit in [-1.2, 1.2]^3, and no two
+/// faces lie in one plane (image-based CSG cannot order coplanar faces).
 const std::vector<NamedTree>& csg_catalogue();
 
 }  // namespace gllab::space

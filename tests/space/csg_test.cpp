@@ -79,11 +79,13 @@ TEST(Csg, RaySpansAreInsideAndTheGapsOutside) {
         ASSERT_LT(x.in.t, x.out.t);
         ASSERT_GE(x.in.t, last);
         const Vec3 mid = o + 0.5 * (x.in.t + x.out.t) * (aim - o);
-        if (x.out.t - x.in.t > 1e-6)
+        if (x.out.t - x.in.t > 1e-6) {
           EXPECT_NE(sp::classify(named.tree, mid, 0), sp::Where::kOutside) << named.name;
+        }
         const Vec3 gap = o + 0.5 * (last + x.in.t) * (aim - o);
-        if (x.in.t - last > 1e-6)
+        if (x.in.t - last > 1e-6) {
           EXPECT_NE(sp::classify(named.tree, gap, 0), sp::Where::kInside) << named.name;
+        }
         if (x.in.primitive >= 0) {  // (-1: the ray starts inside, the span at t = 0)
           EXPECT_NEAR(norm(x.in.normal), 1, 1e-9);
           EXPECT_LT(dot(x.in.normal, aim - o), 0) << named.name;  // entering: against the ray
@@ -93,7 +95,9 @@ TEST(Csg, RaySpansAreInsideAndTheGapsOutside) {
       }
       const sp::CsgHit hit = sp::first_hit(named.tree, o, aim - o);
       EXPECT_EQ(hit.hit, !s.empty());
-      if (hit.hit) EXPECT_DOUBLE_EQ(hit.t, s[0].in.primitive >= 0 ? s[0].in.t : s[0].out.t);
+      if (hit.hit) {
+        EXPECT_DOUBLE_EQ(hit.t, s[0].in.primitive >= 0 ? s[0].in.t : s[0].out.t);
+      }
     }
   EXPECT_GT(spans, 1000u);
 }
@@ -121,8 +125,11 @@ TEST(Csg, VolumesConvergeToTheAnalyticValues) {
     const sp::VolumeEstimate small = sp::volume_monte_carlo(*tree, 20000, 7);
     const sp::VolumeEstimate large = sp::volume_monte_carlo(*tree, 320000, 7);
     EXPECT_LE(std::abs(large.value - exact), large.error);  // within 3 standard errors
-    if (large.error > 0) EXPECT_NEAR(small.error / large.error, 4, 0.4);  // 16x: a quarter
-    else EXPECT_NEAR(large.value, exact, 1e-12);  // every sample inside: the bounds' volume
+    if (large.error > 0) {
+      EXPECT_NEAR(small.error / large.error, 4, 0.4);  // 16x the samples: a quarter
+    } else {
+      EXPECT_NEAR(large.value, exact, 1e-12);  // every sample inside: the bounds' volume
+    }
   }
 }
 
