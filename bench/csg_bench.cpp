@@ -9,6 +9,7 @@
 // OpenCSG's is OpenCSG::render and a shading pass with GL_EQUAL, lit. Every frame ends with
 // glFinish, so a frame's time is the time to draw it.
 #include <GL/glew.h>  // before any other GL header
+#include <opencsg.h>
 
 #include <GL/freeglut.h>
 #include <benchmark/benchmark.h>
@@ -104,7 +105,7 @@ int main(int argc, char** argv) {
   glutInit(&argc, argv);
   glutInitDisplayMode(GLUT_SINGLE | GLUT_RGBA | GLUT_DEPTH | GLUT_STENCIL);
   glutInitWindowSize(kSize, kSize);
-  glutCreateWindow("csg_bench");
+  const int window = glutCreateWindow("csg_bench");
   std::printf("GL_RENDERER %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   const int sizes[] = {4, 8, 16};
   for (int n : sizes) {
@@ -138,5 +139,8 @@ int main(int argc, char** argv) {
   std::printf("ray-CSG first hits/s (one thread): classic %.3g, sieve 16 %.3g\n",
               reporter.rate("rays/classic"), reporter.rate("rays/sieve_16"));
   benchmark::Shutdown();
+  OpenCSG::freeResources();
+  glutDestroyWindow(window);
+  glutExit();
   return 0;
 }

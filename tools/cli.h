@@ -3,12 +3,15 @@
 // with a one-line error naming the option and the text.
 #pragma once
 
+#include <algorithm>
 #include <cerrno>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace gllab::cli {
 
@@ -50,6 +53,45 @@ inline int parse_count(const std::string& text, const std::string& what, int lo,
     throw UsageError(what + ": " + text + " (must be " + std::to_string(lo) + ".." +
                      std::to_string(hi) + ")");
   return static_cast<int>(v);
+}
+
+/// A subcommand's arguments (argv[first] on): positional ones, and --key VALUE or --key=VALUE
+/// for the keys in `known`. `help` is set at --help or -h, and the rest is not read. Throws
+/// UsageError for an unknown option (naming "<tool> <command> --help"), a repeated one, or one
+/// without its value.
+struct SubcommandArgs {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;
+  bool help = false;
+};
+inline SubcommandArgs parse_subcommand(int argc, char** argv, int first,
+                                       const std::vector<std::string>& known,
+                                       const std::string& tool, const std::string& command) {
+  SubcommandArgs out;
+  for (int i = first; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      out.help = true;
+      return out;
+    }
+    if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+      out.positional.push_back(arg);
+      continue;
+    }
+    const std::size_t eq = arg.find('=');
+    const std::string key = arg.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw UsageError("unknown option '--" + key + "' for " + command + " (" + tool + " " +
+                       command + " --help)");
+    if (out.options.count(key)) throw UsageError("--" + key + " given twice");
+    if (eq != std::string::npos) {
+      out.options[key] = arg.substr(eq + 1);
+    } else {
+      if (i + 1 >= argc) throw UsageError("--" + key + " needs a value");
+      out.options[key] = argv[++i];
+    }
+  }
+  return out;
 }
 
 }  // namespace gllab::cli

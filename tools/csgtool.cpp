@@ -462,36 +462,19 @@ int run(int argc, char** argv) {
     if (name == c.name) command = &c;
   if (!command) throw UsageError("unknown command '" + name + "' (csgtool --help lists them)");
 
-  std::vector<std::string> positional;
-  Options options;
-  for (int i = 2; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << command->help;
-      return flushed(kOk);
-    }
-    if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
-      positional.push_back(arg);
-      continue;
-    }
-    const std::size_t eq = arg.find('=');
-    const std::string key = arg.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
-    if (std::find(command->options.begin(), command->options.end(), key) == command->options.end())
-      throw UsageError("unknown option '--" + key + "' for " + name + " (csgtool " + name + " --help)");
-    if (options.count(key)) throw UsageError("--" + key + " given twice");
-    if (eq != std::string::npos) {
-      options[key] = arg.substr(eq + 1);
-    } else {
-      if (i + 1 >= argc) throw UsageError("--" + key + " needs a value");
-      options[key] = argv[++i];
-    }
+  const gllab::cli::SubcommandArgs args =
+      gllab::cli::parse_subcommand(argc, argv, 2, command->options, "csgtool", name);
+  if (args.help) {
+    std::cout << command->help;
+    return flushed(kOk);
   }
+  const std::vector<std::string>& positional = args.positional;
   if (positional.empty()) throw UsageError(name + " needs a TREE.json (csgtool " + name + " --help)");
   if (static_cast<int>(positional.size()) < command->min_positional)
     throw UsageError(name + " needs at least one point X,Y,Z (csgtool " + name + " --help)");
   if (static_cast<int>(positional.size()) > command->max_positional)
     throw UsageError("unexpected argument '" + positional[static_cast<std::size_t>(command->max_positional)] + "'");
-  return flushed(command->run(positional, options));
+  return flushed(command->run(positional, args.options));
 }
 
 /// One line on stderr, whatever the message holds.

@@ -56,20 +56,7 @@ class Checker : public detail::JsonChecker {
   }
 
  private:
-  Vec3 vec3(const Json& v, const std::string& path) const {
-    if (!v.is_array()) fail(path, "expected [x, y, z], got " + describe(v));
-    if (v.size() != 3)
-      fail(path, "has " + std::to_string(v.size()) + " number" + (v.size() == 1 ? "" : "s") +
-                     " (expected [x, y, z])");
-    return {number(v[0], index_path(path, 0)), number(v[1], index_path(path, 1)),
-            number(v[2], index_path(path, 2))};
-  }
-
-  double positive(const Json& v, const std::string& path, const std::string& meaning) const {
-    const double x = number(v, path);
-    if (!(x > 0)) fail(path, shortest_text(x) + " (must be > 0: " + meaning + ")");
-    return x;
-  }
+  Vec3 vec3(const Json& v, const std::string& path) const { return triple(v, path, "", "number"); }
 
   /// Runs a CsgTree builder; its own checks (std::invalid_argument) fail at path.
   template <class Build>

@@ -27,19 +27,7 @@ class Checker : public detail::JsonChecker {
   using JsonChecker::JsonChecker;
 
   Vec3 point(const Json& v, const std::string& path) const {
-    if (!v.is_array()) fail(path, "expected a point [x, y, z], got " + describe(v));
-    if (v.size() != 3)
-      fail(path, "has " + std::to_string(v.size()) + " coordinate" + (v.size() == 1 ? "" : "s") +
-                     " (expected [x, y, z])");
-    return {number(v[0], index_path(path, 0)), number(v[1], index_path(path, 1)),
-            number(v[2], index_path(path, 2))};
-  }
-
-  /// A positive number (a, b).
-  double positive(const Json& v, const std::string& path, const std::string& meaning) const {
-    const double x = number(v, path);
-    if (!(x > 0)) fail(path, shortest_text(x) + " (must be > 0: " + meaning + ")");
-    return x;
+    return triple(v, path, "a point ", "coordinate");
   }
 
   field::Blob blob(const Json& v, const std::string& path) const {

@@ -74,6 +74,25 @@ class JsonChecker {
     return x;
   }
 
+  /// [x, y, z] of finite numbers. `kind` names it in "expected <kind>[x, y, z], got ..." ("a
+  /// point " or ""), `entry` names its entries in "has 2 <entry>s" ("coordinate", "number").
+  spline::Vec3 triple(const Json& v, const std::string& path, const std::string& kind,
+                      const std::string& entry) const {
+    if (!v.is_array()) fail(path, "expected " + kind + "[x, y, z], got " + describe(v));
+    if (v.size() != 3)
+      fail(path, "has " + std::to_string(v.size()) + " " + entry + (v.size() == 1 ? "" : "s") +
+                     " (expected [x, y, z])");
+    return {number(v[0], index_path(path, 0)), number(v[1], index_path(path, 1)),
+            number(v[2], index_path(path, 2))};
+  }
+
+  /// A number > 0; `meaning` says what it is: "... (must be > 0: the radius of the blob)".
+  double positive(const Json& v, const std::string& path, const std::string& meaning) const {
+    const double x = number(v, path);
+    if (!(x > 0)) fail(path, shortest_text(x) + " (must be > 0: " + meaning + ")");
+    return x;
+  }
+
   std::string string(const Json& v, const std::string& path) const {
     if (!v.is_string()) fail(path, "expected a string, got " + describe(v));
     return v.get<std::string>();

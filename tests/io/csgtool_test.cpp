@@ -14,12 +14,15 @@
 
 #include "image/image.h"
 #include "io_test_support.h"
+#include "tool_test_support.h"
 #include "process.h"
 
 namespace gllab::io {
 namespace {
 
 using testing::kExamplesDir;
+using testing::BadRun;
+using testing::joined;
 using testing::ScratchDir;
 
 constexpr int kBadInput = 2;  // csgtool --help: bad input or usage
@@ -33,12 +36,6 @@ const std::string kSphere = (kExamplesDir / "csg" / "sphere.json").string();
 ProcessResult csgtool(std::vector<std::string> args) {
   args.insert(args.begin(), kTool);
   return run_process(args, {}, 120);
-}
-
-std::string joined(const std::vector<std::string>& args) {
-  std::string out;
-  for (const std::string& a : args) out += a + " ";
-  return out;
 }
 
 /// Runs csgtool, expects success and nothing on stderr, returns stdout.
@@ -276,11 +273,6 @@ TEST(CsgtoolErrors, BadArgumentsAndFilesPrintOneLine) {
   const std::string bad = (dir / "bad.json").string();
   std::ofstream(bad) << R"({"type": "csg", "root": {"op": "union", "children": [)"
                         R"({"primitive": "sphere", "radius": 1}, {"primitive": "sphere", "radius": -1}]}})";
-  struct BadRun {
-    std::vector<std::string> args;
-    int status;
-    std::string expected;  // a substring of the one line
-  };
   const std::vector<BadRun> runs = {
       {{}, kBadInput, "no command"},
       {{"frobnicate"}, kBadInput, "unknown command 'frobnicate'"},
@@ -309,15 +301,7 @@ TEST(CsgtoolErrors, BadArgumentsAndFilesPrintOneLine) {
        kBadInput,
        R"(type: "blob_scene" (this file holds a "csg" tree))"},
   };
-  for (const BadRun& run : runs) {
-    const ProcessResult r = csgtool(run.args);
-    const std::string line = joined(run.args);
-    EXPECT_EQ(r.exit_status, run.status) << line << "\n" << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << line << "\n" << r.err;
-    EXPECT_EQ(r.err.rfind("csgtool", 0), 0u) << line << "\n" << r.err;
-    EXPECT_NE(r.err.find(run.expected), std::string::npos) << line << "\n" << r.err;
-    EXPECT_EQ(r.out, "") << line;
-  }
+  for (const BadRun& run : runs) testing::expect_bad_run(csgtool(run.args), run, "csgtool");
 }
 
 TEST(CsgtoolErrors, AFailedWriteToStdoutExitsOne) {

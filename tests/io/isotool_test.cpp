@@ -13,12 +13,15 @@
 #include <vector>
 
 #include "io_test_support.h"
+#include "tool_test_support.h"
 #include "process.h"
 
 namespace gllab::io {
 namespace {
 
 using testing::kExamplesDir;
+using testing::BadRun;
+using testing::joined;
 using testing::ScratchDir;
 
 constexpr int kBadInput = 2;  // isotool --help: bad input or usage
@@ -31,12 +34,6 @@ const std::string kPhantom = (kExamplesDir / "ct_phantom.nrrd").string();
 ProcessResult isotool(std::vector<std::string> args) {
   args.insert(args.begin(), kTool);
   return run_process(args, {}, 120);
-}
-
-std::string joined(const std::vector<std::string>& args) {
-  std::string out;
-  for (const std::string& a : args) out += a + " ";
-  return out;
 }
 
 /// The --stats lines as name -> value.
@@ -111,11 +108,6 @@ TEST(IsotoolHelp, ExitsZeroAndExplainsEveryOption) {
 
 // ---- bad input: one line naming the value -------------------------------------------------
 
-struct BadRun {
-  std::vector<std::string> args;
-  int status;
-  std::string expected;  // a substring of the one line on stderr
-};
 
 TEST(IsotoolErrors, EveryBadInputIsOneLineNamingTheValue) {
   ScratchDir dir("isotool");
@@ -158,15 +150,7 @@ TEST(IsotoolErrors, EveryBadInputIsOneLineNamingTheValue) {
        kFailed,
        (dir / "no_dir" / "s.obj").string() + ": cannot write"},
   };
-  for (const BadRun& run : runs) {
-    const ProcessResult r = isotool(run.args);
-    const std::string line = joined(run.args);
-    EXPECT_EQ(r.exit_status, run.status) << line << "\n" << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << line << "\n" << r.err;
-    EXPECT_EQ(r.err.rfind("isotool: ", 0), 0u) << line << "\n" << r.err;
-    EXPECT_NE(r.err.find(run.expected), std::string::npos) << line << "\n" << r.err;
-    EXPECT_EQ(r.out, "") << line;
-  }
+  for (const BadRun& run : runs) testing::expect_bad_run(isotool(run.args), run, "isotool: ");
 }
 
 TEST(IsotoolErrors, AFailedWriteToStdoutExitsOne) {

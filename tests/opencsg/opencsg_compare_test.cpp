@@ -4,6 +4,7 @@
 // centre but for pixels a 1-pixel shift explains. It needs a GLX window (OpenCSG links libGL
 // and GLEW): CTest runs it under xvfb-run.
 #include <GL/glew.h>  // before any other GL header
+#include <opencsg.h>
 
 #include <GL/freeglut.h>
 #include <gtest/gtest.h>
@@ -63,6 +64,11 @@ int main(int argc, char** argv) {
   glutInit(&argc, argv);
   glutInitDisplayMode(GLUT_SINGLE | GLUT_RGBA | GLUT_DEPTH | GLUT_STENCIL);
   glutInitWindowSize(kSize, kSize);
-  glutCreateWindow("opencsg_compare_test");
-  return RUN_ALL_TESTS();
+  const int window = glutCreateWindow("opencsg_compare_test");
+  const int status = RUN_ALL_TESTS();
+  // Give back what OpenCSG and the window hold, so that LeakSanitizer sees nothing left.
+  OpenCSG::freeResources();
+  glutDestroyWindow(window);
+  glutExit();
+  return status;
 }
