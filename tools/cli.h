@@ -1,6 +1,6 @@
-// tools/cli.h — what splinetool and isotool share on the command line: their
-// exit statuses, their two kinds of error, and option values read as numbers
-// with a one-line error naming the option and the text.
+// tools/cli.h — what splinetool, isotool and csgtool share on the command line: their
+// exit statuses, their kinds of error and the one line that reports them, and option
+// values read as numbers with a one-line error naming the option and the text.
 #pragma once
 
 #include <algorithm>
@@ -8,10 +8,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <stdexcept>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "io/spline_json.h"  // FileError
 
 namespace gllab::cli {
 
@@ -92,6 +95,31 @@ inline SubcommandArgs parse_subcommand(int argc, char** argv, int first,
     }
   }
   return out;
+}
+
+/// A tool's main: runs `run(argc, argv)` and turns each kind of error into one line on
+/// stderr after `prefix` (newlines in the message become spaces) and its exit status.
+template <class Run>
+int main_reporting(const std::string& prefix, Run run, int argc, char** argv) {
+  const auto report = [&prefix](std::string message, int status) {
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::cerr << prefix << message << "\n";
+    return status;
+  };
+  try {
+    return run(argc, argv);
+  } catch (const UsageError& e) {
+    return report(e.what(), kBadInput);
+  } catch (const OutputError& e) {
+    return report(e.what(), kFailed);
+  } catch (const io::FileError& e) {
+    return report(e.what(), kBadInput);
+  } catch (const std::invalid_argument& e) {
+    // The core's checks: the input does not suit the operation.
+    return report(e.what(), kBadInput);
+  } catch (const std::exception& e) {
+    return report(std::string("internal error: ") + e.what(), kFailed);
+  }
 }
 
 }  // namespace gllab::cli

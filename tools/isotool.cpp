@@ -264,28 +264,8 @@ int run(int argc, char** argv) {
   return kOk;
 }
 
-/// One line on stderr, whatever the message holds.
-int report(std::string message, int status) {
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  std::cerr << "isotool: " << message << "\n";
-  return status;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const UsageError& e) {
-    return report(e.what(), kBadInput);
-  } catch (const OutputError& e) {
-    return report(e.what(), kFailed);
-  } catch (const FileError& e) {
-    return report(e.what(), kBadInput);
-  } catch (const std::invalid_argument& e) {
-    // The core's checks: the input does not suit the operation.
-    return report(e.what(), kBadInput);
-  } catch (const std::exception& e) {
-    return report(std::string("internal error: ") + e.what(), kFailed);
-  }
+  return gllab::cli::main_reporting("isotool: ", run, argc, argv);
 }

@@ -596,27 +596,7 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-/// One line on stderr, whatever the message holds.
-int report(const std::string& prefix, std::string message, int status) {
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  std::cerr << prefix << message << "\n";
-  return status;
-}
-
 int main(int argc, char** argv) {
   const std::string prefix = argc >= 2 ? std::string("splinetool ") + argv[1] + ": " : "splinetool: ";
-  try {
-    return run(argc, argv);
-  } catch (const UsageError& e) {
-    return report(prefix, e.what(), kBadInput);
-  } catch (const OutputError& e) {
-    return report(prefix, e.what(), kFailed);
-  } catch (const FileError& e) {
-    return report(prefix, e.what(), kBadInput);
-  } catch (const std::invalid_argument& e) {
-    // The core's checks: the input does not suit the operation.
-    return report(prefix, e.what(), kBadInput);
-  } catch (const std::exception& e) {
-    return report(prefix, std::string("internal error: ") + e.what(), kFailed);
-  }
+  return gllab::cli::main_reporting(prefix, run, argc, argv);
 }
