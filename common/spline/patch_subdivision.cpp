@@ -65,7 +65,65 @@ void split_rec(const BezierSurface& s, double tol, int depth, int max_depth,
   }
 }
 
+struct Edge {
+  Vec2 p0, p1;  // (u, v) end points, axis-parallel
+};
+
+// The longest leaf edge that has uv strictly inside it (nullptr when none).
+const Edge* longest_edge_through(const std::vector<Edge>& edges, Vec2 uv) {
+  const double eps = 1e-12;
+  const Edge* best = nullptr;
+  double best_len = 0;
+  for (const Edge& e : edges) {
+    const bool horizontal = e.p0.y == e.p1.y;
+    const double along = horizontal ? uv.x : uv.y, fixed = horizontal ? uv.y : uv.x;
+    const double lo = horizontal ? std::min(e.p0.x, e.p1.x) : std::min(e.p0.y, e.p1.y);
+    const double hi = horizontal ? std::max(e.p0.x, e.p1.x) : std::max(e.p0.y, e.p1.y);
+    if (std::abs(fixed - (horizontal ? e.p0.y : e.p0.x)) > eps) continue;
+    if (!(along > lo + eps && along < hi - eps)) continue;
+    if (hi - lo > best_len) {
+      best_len = hi - lo;
+      best = &e;
+    }
+  }
+  return best;
+}
+
+// The crack-free position of the vertex at uv (see leaf_quads); guard bounds the recursion.
+Vec3 placed(const BezierSurface& s, const std::vector<Edge>& edges, Vec2 uv, int guard) {
+  const Edge* e = guard > 0 ? longest_edge_through(edges, uv) : nullptr;
+  if (!e) return surface_point(s, uv.x, uv.y);
+  const bool horizontal = e->p0.y == e->p1.y;
+  const double w = horizontal ? (uv.x - e->p0.x) / (e->p1.x - e->p0.x)
+                              : (uv.y - e->p0.y) / (e->p1.y - e->p0.y);
+  const Vec3 q0 = placed(s, edges, e->p0, guard - 1), q1 = placed(s, edges, e->p1, guard - 1);
+  return (1 - w) * q0 + w * q1;
+}
+
 }  // namespace
+
+std::vector<LeafQuad> leaf_quads(const BezierSurface& surface, const std::vector<PatchLeaf>& leaves,
+                                 bool close_cracks) {
+  validate(surface);
+  std::vector<Edge> edges;
+  std::vector<LeafQuad> out;
+  for (const PatchLeaf& l : leaves) {
+    LeafQuad q;
+    q.depth = l.depth;
+    q.uv[0] = {l.patch.a, l.patch.c};
+    q.uv[1] = {l.patch.b, l.patch.c};
+    q.uv[2] = {l.patch.b, l.patch.d};
+    q.uv[3] = {l.patch.a, l.patch.d};
+    for (int k = 0; k < 4; ++k) edges.push_back({q.uv[k], q.uv[(k + 1) % 4]});
+    out.push_back(q);
+  }
+  // A guard on placed()'s recursion (each step goes to the end points of an edge that
+  // holds the vertex inside it); split_adaptive's quadtrees need far fewer steps.
+  const int guard = close_cracks ? 64 : 0;
+  for (LeafQuad& q : out)
+    for (int k = 0; k < 4; ++k) q.p[k] = placed(surface, edges, q.uv[k], guard);
+  return out;
+}
 
 BezierSurfaceSplit split_u(const BezierSurface& surface, double u0) {
   return split(surface, u0, true, "split_u");

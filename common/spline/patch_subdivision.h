@@ -17,8 +17,14 @@
 //
 // Notation as surface.h: degree n along u (row i), m along v (column j),
 // b_ij = P[i * (m + 1) + j]. Bad input throws SplineError (std::invalid_argument).
-// Not done here: closing the T-junction cracks between patches split to
-// different depths ("Patch Cracking").
+//   leaf_quads           each leaf drawn as the flat quad of its four corners:
+//                        where a finer leaf meets a coarser one, the finer
+//                        leaf's corner on the shared edge is a point of the
+//                        surface but the coarser quad's edge is a straight
+//                        segment, so a crack opens ("Patch Cracking"). With
+//                        close_cracks every such T-junction vertex is snapped
+//                        onto the coarser side's edge line (linear in the
+//                        parameter between that edge's own end points).
 #pragma once
 
 #include <vector>
@@ -57,6 +63,21 @@ struct PatchLeaf {
 /// outside [0, 12]. Leaves in depth-first order (first u half, then v half).
 std::vector<PatchLeaf> split_adaptive(const BezierSurface& surface, double tolerance,
                                       int max_depth);
+
+/// One flat quad per leaf: the (u, v) corners (a,c) (b,c) (b,d) (a,d) and their
+/// points. close_cracks == false: the points are X at the corners. true: a
+/// corner that lies inside (not at an end of) another leaf's edge is moved to
+/// the longest such edge's segment, linearly in its parameter between that
+/// edge's end points (which are placed the same way first), so every vertex on
+/// a shared edge lies on the coarser quad's edge. Leaves must tile a rectangle
+/// as split_adaptive's do.
+struct LeafQuad {
+  Vec2 uv[4];
+  Vec3 p[4];
+  int depth = 0;
+};
+std::vector<LeafQuad> leaf_quads(const BezierSurface& surface, const std::vector<PatchLeaf>& leaves,
+                                 bool close_cracks);
 
 /// The curve t -> X(a + t (b - a), c + t (d - c)), t in [0, 1], along the
 /// domain's diagonal: a Bézier curve of degree n + m, since
