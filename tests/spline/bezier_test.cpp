@@ -3,7 +3,7 @@
 // Expected values come from the worked examples of ch. 1 §1.6 (de Casteljau
 // at t = 0.6, Bézier interpolation), the formulas printed in ch. 1 and the notes "Geometric Modeling" and "Higher Order Surfaces"
 // (Bernstein cubics, the Bézier matrix, end-point derivatives, midpoint
-// subdivision), or from properties checked over many random curves (fixed
+// subdivision, the parabola b = (0,1,0), (1,1,0), (0,2,0) worked by hand), or from properties checked over many random curves (fixed
 // seeds): partition of unity, convex hull, endpoint interpolation, affine
 // invariance, symmetry, subdivision and degree elevation leave the curve
 // unchanged, monomial round trip.
@@ -159,6 +159,39 @@ TEST(DeCasteljau, LectureExampleOnIntervalTwoToSeven) {
   expect_near_vec(ders[2], Vec3{-3.6, -29.4, 0} / 25, tol);
   expect_near_vec(bezier_derivative_at(c, 5.0, 2), Vec3{-3.6, -29.4, 0} / 25, tol);
   EXPECT_EQ(de_casteljau(c, 5.0).s, 0.6);
+}
+
+TEST(DeCasteljau, GeometricModelingParabolaExample) {
+  // notes "Geometric Modeling", "Another parabola construction": b0 = (0,1,0),
+  // b1 = (1,1,0), b2 = (0,2,0). The notes print the points only; the values below
+  // follow by hand from the notes' formulas on that page. At t = 1/2:
+  //   b0^1 = (b0 + b1) / 2 = (1/2, 1, 0),  b1^1 = (b1 + b2) / 2 = (1/2, 3/2, 0),
+  //   b0^2 = (b0^1 + b1^1) / 2 = (1/2, 5/4, 0)
+  // = (1-t)^2 b0 + 2t(1-t) b1 + t^2 b2 = b0/4 + b1/2 + b2/4 (the page's closed form).
+  // Expanded in powers of t (the page's "Parabolas" form x(t) = p0 + t p1 + t^2 p2):
+  //   p0 = b0 = (0,1,0), p1 = 2 (b1 - b0) = (2,0,0), p2 = b0 - 2 b1 + b2 = (-2,1,0).
+  // All of these are dyadic, so the scheme reproduces them to round-off (kExact).
+  BezierCurve c;
+  c.P = {{0, 1, 0}, {1, 1, 0}, {0, 2, 0}};
+  const DeCasteljau d = de_casteljau(c, 0.5);
+  ASSERT_EQ(d.levels.size(), 3u);
+  expect_near_vec(d.levels[1][0], {0.5, 1, 0}, kExact);
+  expect_near_vec(d.levels[1][1], {0.5, 1.5, 0}, kExact);
+  expect_near_vec(d.levels[2][0], {0.5, 1.25, 0}, kExact);
+  expect_near_vec(d.point, {0.5, 1.25, 0}, kExact);
+  const std::vector<Vec3> m = monomial_coefficients(c);
+  ASSERT_EQ(m.size(), 3u);
+  expect_near_vec(m[0], {0, 1, 0}, kExact);
+  expect_near_vec(m[1], {2, 0, 0}, kExact);
+  expect_near_vec(m[2], {-2, 1, 0}, kExact);
+  // The closed form x = 2t - 2t^2, y = 1 + t^2, z = 0 ("planar curve, even if
+  // defined in R^3") at every sample; ends are b0 and b2.
+  for (int k = 0; k < kSamples; ++k) {
+    const double t = sample(0, 1, k);
+    expect_near_vec(bezier_point(c, t), {2 * t - 2 * t * t, 1 + t * t, 0}, kExact * 2);
+  }
+  expect_near_vec(bezier_point(c, 0), c.P[0], kExact);
+  expect_near_vec(bezier_point(c, 1), c.P[2], kExact);
 }
 
 TEST(DeCasteljau, SchemeHasEveryIntermediatePolygon) {
