@@ -3,7 +3,8 @@
 // Expected values come from the worked examples of ch. 1 §1.6 (de Casteljau
 // at t = 0.6, Bézier interpolation), the formulas printed in ch. 1 and the notes "Geometric Modeling" and "Higher Order Surfaces"
 // (Bernstein cubics, the Bézier matrix, end-point derivatives, midpoint
-// subdivision, the parabola b = (0,1,0), (1,1,0), (0,2,0) worked by hand), or from properties checked over many random curves (fixed
+// subdivision, the parabola b = (0,1,0), (1,1,0), (0,2,0) worked by hand; variation
+// diminishing against 10^4 random lines with exact crossing counts), or from properties checked over many random curves (fixed
 // seeds): partition of unity, convex hull, endpoint interpolation, affine
 // invariance, symmetry, subdivision and degree elevation leave the curve
 // unchanged, monomial round trip.
@@ -192,6 +193,89 @@ TEST(DeCasteljau, GeometricModelingParabolaExample) {
   }
   expect_near_vec(bezier_point(c, 0), c.P[0], kExact);
   expect_near_vec(bezier_point(c, 1), c.P[2], kExact);
+}
+
+// ---- variation diminishing ------------------------------------------------------------
+
+constexpr int kVariationCases = 10000;   // random (curve, line) pairs
+constexpr int kVariationMaxDepth = 50;   // bisections before an interval counts as degenerate
+
+/// g(s) = sum_i d_i B_i^n(s) by de Casteljau on the scalars d (written here).
+double bernstein_sum(std::vector<double> d, double s) {
+  for (std::size_t r = 1; r < d.size(); ++r)
+    for (std::size_t i = 0; i + r < d.size(); ++i) d[i] = (1 - s) * d[i] + s * d[i + 1];
+  return d[0];
+}
+
+/// Roots of odd multiplicity (sign changes) of g in [a, b], with g(a), g(b) != 0, or -1
+/// when undecidable. Rigorous bounds, not Descartes' rule (which is the property under
+/// test): |g'| <= L1 = n max|d_{i+1} - d_i| and |g''| <= L2 = n(n-1) max|second
+/// differences| on [0, 1] (the derivative's Bézier coefficients bound it, convex hull).
+/// If |g(m)| > L1 (b - a)/2 at the midpoint m, g has no root in [a, b]; if |g'(m)| >
+/// L2 (b - a)/2, g is monotone there and has a root iff g(a), g(b) differ in sign.
+/// Otherwise bisect; an interval still undecided after kVariationMaxDepth halvings is a
+/// near-tangency and the case is skipped (counted).
+int count_crossings(const std::vector<double>& d, const std::vector<double>& d1, double L1,
+                    double L2, double a, double b, double ga, double gb, int depth) {
+  const double m = (a + b) / 2, gm = bernstein_sum(d, m), half = (b - a) / 2;
+  if (std::fabs(gm) > L1 * half) return 0;
+  if (!d1.empty() && std::fabs(bernstein_sum(d1, m)) > L2 * half) return (ga < 0) != (gb < 0);
+  if (depth >= kVariationMaxDepth || gm == 0) return -1;
+  const int left = count_crossings(d, d1, L1, L2, a, m, ga, gm, depth + 1);
+  const int right = count_crossings(d, d1, L1, L2, m, b, gm, gb, depth + 1);
+  return left < 0 || right < 0 ? -1 : left + right;
+}
+
+TEST(BezierProperties, VariationDiminishingAgainstRandomLines) {
+  // ch. 1 §1.6, Bézier properties, "2) Variation diminishing", and notes "Geometric
+  // Modeling", "Properties of Bezier curves": an arbitrary straight line intersects the
+  // (planar) curve as often or less than the control polygon. For the line n.x = c put
+  // d_i = n.b_i - c: the curve's crossings are the sign changes of g(s) = sum d_i B_i^n(s)
+  // on (0, 1), the polygon's are the sign changes of the sequence d_0..d_n (a d_i of
+  // exactly 0 is skipped). Counts are exact (count_crossings), not sampled.
+  std::mt19937 rng(1906);  // fixed seed
+  std::uniform_real_distribution<double> angle(0, 2 * 3.14159265358979323846), unit(0, 1);
+  int skipped = 0, tested = 0, with_crossings = 0;
+  for (int k = 0; k < kVariationCases; ++k) {
+    const int n = 1 + k % 10;
+    std::vector<Vec3> P;
+    for (int i = 0; i <= n; ++i) P.push_back({unit(rng) * 10 - 5, unit(rng) * 10 - 5, 0});
+    const double th = angle(rng);
+    const Vec3 normal = {std::cos(th), std::sin(th), 0};
+    const Vec3 through = P[static_cast<std::size_t>(k) % P.size()] * unit(rng);
+    std::vector<double> d;
+    for (const Vec3& p : P) d.push_back(dot(normal, p) - dot(normal, through));
+    int polygon = 0;
+    bool zero = false;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      zero = zero || d[i] == 0;
+      if (i > 0) polygon += (d[i - 1] < 0) != (d[i] < 0);
+    }
+    std::vector<double> d1;
+    double L1 = 0, L2 = 0;
+    for (int i = 0; i < n; ++i) {
+      d1.push_back(n * (d[i + 1] - d[i]));
+      L1 = std::max(L1, std::fabs(d1.back()));
+    }
+    // g' has coefficients d1; for n = 1 it is constant (L2 = 0: monotone everywhere).
+    for (int i = 0; i + 1 < n; ++i) L2 = std::max(L2, (n - 1) * std::fabs(d1[i + 1] - d1[i]));
+    const int curve = zero ? -1 : count_crossings(d, d1, L1, L2, 0, 1, d.front(), d.back(), 0);
+    if (curve < 0) {
+      ++skipped;
+      continue;
+    }
+    ++tested;
+    with_crossings += curve > 0;
+    EXPECT_LE(curve, polygon) << "case " << k << ", degree " << n;
+    // Parity: both counts have the parity of sign(d_0) != sign(d_n).
+    EXPECT_EQ(curve % 2, polygon % 2) << "case " << k;
+  }
+  // Degenerate (tangent or exactly-through-a-vertex) cases are measure zero for random data.
+  EXPECT_LE(skipped, kVariationCases / 100) << skipped << " skipped";
+  EXPECT_GE(with_crossings, kVariationCases / 10) << "too few lines meet their curve";
+  EXPECT_EQ(tested + skipped, kVariationCases);
+  RecordProperty("skipped", skipped);
+  RecordProperty("with_crossings", with_crossings);
 }
 
 TEST(DeCasteljau, SchemeHasEveryIntermediatePolygon) {
