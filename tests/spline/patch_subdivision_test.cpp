@@ -1,7 +1,6 @@
 // tests/spline/patch_subdivision_test.cpp — common/spline/patch_subdivision.h:
 // one-direction splits, the notes' flatness test and adaptive splitting, cracks and
-// their closing,  the
-// diagonal curve of degree n + m, the matrix form, and G1 joins of patches.
+// their closing, the diagonal curve of degree n + m, the matrix form, G1 joins.
 #include "spline/patch_subdivision.h"
 
 #include <gtest/gtest.h>
