@@ -35,25 +35,26 @@ using sp::BezierSurface;
 using sp::Vec3;
 
 // Lab data (edit me) -------------------------------------------------------
-// A bicubic patch, b_ij = P[4 i + j], i along u (x); one corner pulled up high
-// so that quarter needs deeper splits than the rest.
+// A bicubic patch, b_ij = P[4 i + j]: a fan whose v-lines are arcs in the plane (flat, so
+// its pieces stop early, with straight edges under the arcs), and one corner pulled up high,
+// so that quarter needs deeper splits whose corners lie on the arcs: a crack you can see.
 const std::vector<Vec3> kPatch = {
-    {-1.5, -1.5, 0},   {-1.5, -.5, .2},  {-1.5, .5, .2},  {-1.5, 1.5, 0},
-    {-.5, -1.5, .2},   {-.5, -.5, .4},   {-.5, .5, .4},   {-.5, 1.5, .3},
-    {.5, -1.5, .2},    {.5, -.5, .4},    {.5, .5, 1.6},   {.5, 1.5, 1.2},
-    {1.5, -1.5, 0},    {1.5, -.5, .3},   {1.5, .5, 1.2},  {1.5, 1.5, 3.0}};
+    {-1.15, -0.78, 0.0}, {-0.75, -0.31, 0.0}, {-0.75, 0.31, 0.0}, {-1.15, 0.78, 0.0},
+    {-0.80, -1.39, 0.0}, {-0.10, -0.55, 0.0}, {-0.10, 0.55, 0.0}, {-0.80, 1.39, 0.0},
+    {-0.45, -1.99, 0.0}, {0.56, -0.79, 0.0}, {0.56, 0.79, 0.3}, {-0.45, 1.99, 0.6},
+    {-0.10, -2.60, 0.0}, {1.22, -1.03, 0.2}, {1.22, 1.03, 1.2}, {-0.10, 2.60, 2.0}};
 constexpr int kMaxDepth = 4;  // the termination guarantee: at most 4^4 pieces
-const Rgb kNet{.2f, .2f, .25f}, kCurve{.1f, .1f, .9f}, kText{1.f, 1.f, 1.f};
+const Rgb kNet{.6f, .6f, .65f}, kCurve{.4f, .65f, 1.f}, kText{1.f, 1.f, 1.f};
 // Piece colours by depth 0..4 (the flatness test's answer).
 const GLfloat kDepthColour[5][3] = {
     {.95f, .95f, .5f}, {.5f, .9f, .5f}, {.5f, .85f, .95f}, {.95f, .65f, .3f}, {.9f, .9f, .9f}};
 
 // Drawing -------------------------------------------------------------------
 void camera(const State& s) {
-  gllab::ortho_fit(s.width, s.height, 2.6, 2.6);
+  gllab::ortho_fit(s.width, s.height, 3.0, 3.0);
   gllab::enable_headlight();
   gllab::apply_orbit(s);  // right-drag, wheel, [0]: s.camera
-  gllab::look_from_above(35, 40);
+  gllab::look_from_above(60, -90);
   glTranslated(0, 0, -0.8);
 }
 
@@ -64,6 +65,9 @@ void draw_pieces(const State& s, bool close_cracks) {
   const BezierSurface p = patch(s);
   const double tol = s.get("tolerance");
   const auto quads = sp::leaf_quads(p, sp::split_adaptive(p, tol, kMaxDepth), close_cracks);
+  glClearColor(1.f, 0.f, 1.f, 1.f);  // magenta: shows through every crack
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glClearColor(0.12f, 0.13f, 0.16f, 1.f);  // the other views' background again
   camera(s);
   glEnable(GL_LIGHTING);
   glEnable(GL_COLOR_MATERIAL);
@@ -120,7 +124,7 @@ void draw_nets(const State& s) {
   const BezierSurface p = patch(s);
   camera(s);
   for (const sp::PatchLeaf& l : sp::split_adaptive(p, 1e-300, 2)) {
-    gllab::draw_control_net(l.patch.P, 4, 4, Rgb{.1f, .3f, .6f});
+    gllab::draw_control_net(l.patch.P, 4, 4, Rgb{.4f, .7f, 1.f});
   }
   if (s.flag("nets")) gllab::draw_control_net(p.P, 4, 4, kNet);
   gllab::draw_text_panel(8, 8, {"the 16 sub-nets after 2 splits each way"}, kText);
@@ -129,7 +133,7 @@ void draw_nets(const State& s) {
 // init ----------------------------------------------------------------------
 void init() {
   glEnable(GL_DEPTH_TEST);
-  glClearColor(1.f, 0.f, 1.f, 1.f);  // magenta: shows through every crack
+  glClearColor(0.12f, 0.13f, 0.16f, 1.f);  // draw_pieces clears to magenta itself
 }
 
 }  // namespace
