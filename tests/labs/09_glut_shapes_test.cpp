@@ -38,6 +38,13 @@ TEST(GlutShapesLab, EachCellNamesTheCallDrawGlutShapeMakes) {
   }
 }
 
+// Lecture notes ch. 1, §1.3 Polygon rendering with OpenGL, list the convenience function
+// glutWiredTetrahedron; freeglut declares glutWireTetrahedron(void) (GL/freeglut_std.h), and
+// that is the name the glut_wire view captions its tetrahedron with.
+TEST(GlutShapesLab, WireTetrahedronIsGlutWireTetrahedronNotesSlip) {
+  EXPECT_EQ(gllab::glut_call_text(gllab::GlutShape::kTetrahedron, false), "glutWireTetrahedron()");
+}
+
 // Both spheres are drawn with slices = 2 x glut_stacks; the captions give the
 // arguments: (radius, slices, stacks).
 TEST(GlutShapesLab, SphereCaptionsGiveTheSlicesAndStacks) {

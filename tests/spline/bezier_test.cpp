@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "spline/interpolation.h"
+#include "spline/quadrature.h"
 
 namespace gllab::spline {
 namespace {
@@ -801,6 +802,27 @@ TEST(BezierIntegral, EqualsTheIntegralOfThePowerForm) {
     }
     expect_near_vec(bezier_integral(curve), exact, kExact * std::max(terms, scale_of(curve.P)));
   }
+}
+
+// ch. 1 §1.6, "Integrating a Bézier segment", prints the segment as
+// sum b_i B_i^n((1 - a)/(b - a)) and its integral as (b - a)/(m + 1) (b_0 + ... + b_m). The
+// argument is (t - a)/(b - a) (as in "Generalization"), and the sum runs over the segment's own
+// n + 1 points: int_0^1 B_i^n = 1/(n + 1).
+// A quartic on [2, 7]: (b - a)/(n + 1) = 5/5 = 1, so the integral is the sum of the points,
+// (6, 6, 5) by hand. Independent check: 3-point Gauss-Legendre, exact up to degree 5.
+TEST(BezierIntegral, LocalParameterAndDegreeNNotesSlip) {
+  BezierCurve c;
+  c.P = {{0, 1, 2}, {3, -1, 0}, {4, 4, 1}, {-2, 0, 5}, {1, 2, -3}};
+  c.a = 2;
+  c.b = 7;
+  const Vec3 sum_of_points{6, 6, 5};
+  expect_near_vec(bezier_integral(c), sum_of_points, kExact * 10);
+  const GaussRule rule = gauss_legendre(3);
+  Vec3 gauss;
+  const double half = (c.b - c.a) / 2, mid = (c.a + c.b) / 2;
+  for (std::size_t k = 0; k < rule.x.size(); ++k)
+    gauss += half * rule.w[k] * bezier_point(c, mid + half * rule.x[k]);
+  expect_near_vec(gauss, sum_of_points, kExact * 10);
 }
 
 TEST(BezierAntiderivative, DifferentiatesBackToTheCurve) {

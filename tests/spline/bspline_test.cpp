@@ -503,6 +503,63 @@ TEST(KnotInsert, LectureExampleInsertsHalfIntoCubic) {
   expect_same_curve(c, step.curve, samples(c), "lecture insertion");
 }
 
+// Ch. 1 §1.6 "Knot insertion", the example, prints q_5 = (1 - 1/6 d_4) + 1/6 d_5 (and so q_4,
+// q_3): the bracket closes after the weight, q_5 = (1 - 1/6) d_4 + 1/6 d_5. With d_i = (i, i^2, 0),
+// by hand: q_3 = 1/6 d_2 + 5/6 d_3 = (17/6, 49/6), q_4 = (d_3 + d_4)/2 = (7/2, 25/2),
+// q_5 = 5/6 d_4 + 1/6 d_5 = (25/6, 35/2).
+TEST(KnotInsert, LectureExampleWeightsMultiplyThePointsNotesSlip) {
+  BsplineCurve c;
+  c.p = 3;
+  c.U = {0, 0, 0, 0, .2, .4, .6, .8, 1, 1, 1, 1};
+  for (int i = 0; i < 8; ++i) c.P.push_back({double(i), double(i * i), 0});
+  const std::vector<Vec3> P = knot_insert_step(c, 0.5).curve.P;
+  ASSERT_EQ(P.size(), 9u);
+  const Vec3 q3{17.0 / 6, 49.0 / 6, 0}, q4{3.5, 12.5, 0}, q5{25.0 / 6, 17.5, 0};
+  EXPECT_LE(dist(P[3], q3), 4 * kRounding * scale_of(c));
+  EXPECT_LE(dist(P[4], q4), 4 * kRounding * scale_of(c));
+  EXPECT_LE(dist(P[5], q5), 4 * kRounding * scale_of(c));
+}
+
+// Notes "Higher Order Surfaces", "Knot Insertion": for t_j <= t' < t_{j+1} they print
+// p'_i = (1 - a_i) p_i + a_i p_{i+1}, which with their own a_i = 1 for small i would drop p_1
+// (p'_1 = p_2). Boehm's rule is p'_i = a_i p_i + (1 - a_i) p_{i-1}. The same page also counts k
+// as the degree in a_i, while the notes' knot vector t_0..t_{n+k} makes k the order
+// ("#knots = #control points + order"); with k the order, a_i = 1 for i <= j - k + 1,
+// (t' - t_i)/(t_{i+k-1} - t_i) for j - k + 2 <= i <= j, and 0 for i >= j + 1. That rule,
+// written out here, must give the core's polygon, for a cubic and a quadratic on uneven knots.
+TEST(KnotInsert, HigherOrderSurfacesRuleTakesPiMinus1NotesSlip) {
+  struct Case {
+    int p;
+    std::vector<double> U;
+    double t;
+  };
+  for (const Case& k_case : {Case{3, {0, 0, 0, 0, 1, 3, 4, 7, 7, 7, 7}, 2.0},
+                             Case{2, {0, 0, 0, 1, 2.5, 4, 6, 6, 6}, 3.0}}) {
+    BsplineCurve c;
+    c.p = k_case.p;
+    c.U = k_case.U;
+    const int n = static_cast<int>(c.U.size()) - c.p - 2;
+    for (int i = 0; i <= n; ++i) c.P.push_back({double(i), double((i * 5) % 7), double(i * i) / 4});
+    const int k = c.p + 1;  // the order, as the notes count
+    int j = 0;
+    while (!(c.U[j] <= k_case.t && k_case.t < c.U[j + 1])) ++j;
+    std::vector<Vec3> expected(n + 2);
+    expected[0] = c.P[0];
+    expected[n + 1] = c.P[n];
+    for (int i = 1; i <= n; ++i) {
+      const double a = i <= j - k + 1 ? 1.0
+                       : i >= j + 1   ? 0.0
+                                      : (k_case.t - c.U[i]) / (c.U[i + k - 1] - c.U[i]);
+      expected[i] = a * c.P[i] + (1 - a) * c.P[i - 1];
+    }
+    const std::vector<Vec3> P = knot_insert_step(c, k_case.t).curve.P;
+    ASSERT_EQ(P.size(), expected.size()) << "degree " << c.p;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      EXPECT_LE(dist(P[i], expected[i]), 4 * kRounding * scale_of(c))
+          << "degree " << c.p << ", point " << i;
+  }
+}
+
 TEST(KnotInsert, LeavesRandomCurvesUnchanged) {
   // Insert a random parameter r times (up to multiplicity p), and an existing
   // knot once; the curve is the same at 101 parameters (ch. 1 §1.6 "without
@@ -837,6 +894,38 @@ TEST(UniformCubic, LectureCoefficientsAndContinuityConditions) {
   EXPECT_LE(dist(d, (P0 + 4.0 * P1 + P2) / 6.0), 8 * kRounding);
   EXPECT_LE(dist(c, (P2 - P0) / 2.0), 8 * kRounding);
   EXPECT_LE(dist(2.0 * b, P2 - 2.0 * P1 + P0), 8 * kRounding);
+}
+
+// Notes "B-Spline Polynomials", "Could also be written in terms of blending functions", print
+// B_{i-1,4} = 1/6 (-3t^3 + 3t^2 - 3t + 1). The weight of P_{i-1} is the third column of their
+// own matrix read against [t^3 t^2 t 1]: (-3t^3 + 3t^2 + 3t + 1)/6. At t = 1 it is 4/6 (the
+// point under the knot pulls 4 times as hard as its neighbours); with -3t it would be -1/3.
+TEST(UniformCubic, BlendingFunctionOfPiMinus1HasPlus3tNotesSlip) {
+  for (int s = 0; s <= 100; ++s) {
+    const double t = s / 100.0;
+    const double expected = (-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6;
+    EXPECT_NEAR(uniform_cubic_basis(t)[2], expected, 4 * kRounding) << "t=" << t;
+  }
+  EXPECT_NEAR(uniform_cubic_basis(1)[2], 4.0 / 6, kRounding);
+}
+
+// Notes "Higher Order Surfaces", "B Splines": C^d at the joint is sum_k p_{i+k} B_k^(d)(1) =
+// sum_k p_{i+k+1} B_k^(d)(0). p_i appears only on the left, so its coefficient B_0^(d)(1) is 0
+// for d = 0, 1, 2, as the notes write for d = 0; for C1 and C2 they print B_0'(1) = 1 and
+// B_0''(1) = 1. By hand, B_0 = (1 - t)^3/6, B_0' = -(1 - t)^2/2, B_0'' = 1 - t: 0 at t = 1,
+// -1/2 and 1 at t = 0. Derivatives by A2.3 on the uniform knots 0..7, span [3, 4], where
+// N_{j,3}(3 + t) = B_j(t).
+TEST(UniformCubic, B0HasZeroSlopeAndBendAtOneNotesSlip) {
+  const std::vector<double> U = {0, 1, 2, 3, 4, 5, 6, 7};
+  const auto at0 = ders_basis_funs(3, 3.0, 3, 2, U), at1 = ders_basis_funs(3, 4.0, 3, 2, U);
+  for (int d = 0; d <= 2; ++d) {
+    EXPECT_NEAR(at1[d][0], 0, 8 * kRounding) << "B_0^(" << d << ")(1)";
+    EXPECT_NEAR(at0[d][3], 0, 8 * kRounding) << "B_3^(" << d << ")(0)";
+    for (int k = 1; k <= 3; ++k)
+      EXPECT_NEAR(at1[d][k], at0[d][k - 1], 8 * kRounding) << "B_" << k << "^(" << d << ")(1)";
+  }
+  EXPECT_NEAR(at0[1][0], -0.5, 8 * kRounding);
+  EXPECT_NEAR(at0[2][0], 1.0, 8 * kRounding);
 }
 
 TEST(UniformCubic, MatrixFormEqualsDeBoorOnUniformKnots) {

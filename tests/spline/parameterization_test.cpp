@@ -14,6 +14,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace gllab::spline {
@@ -75,6 +76,24 @@ const std::vector<Vec3> kFourPoints = {{0, 0, 0}, {3, 4, 0}, {3, 5, 0}, {-1, 2, 
 TEST(Parameters, UniformStepsByOne) {
   expect_parameters(parameters(kFourPoints, Parameterization::kUniform), {0, 1, 2, 3}, 0);
   expect_parameters(parameters(kFourPoints, Parameterization::kUniform, true), {0, 1, 2, 3, 4}, 0);
+}
+
+// ch. 1 §1.6 "Parameterizations", "Equidistant parameterization": on [a, b] the step is
+// Delta t = (b - a)/n and t_i = a + i Delta t; the notes print t_i = a + i, which ends at b only
+// when Delta t = 1. The core's uniform parameters step by 1 on [0, n]; rescaled to [0, 1] they
+// must be i/n (1/3 apart for the four points, whatever their chords), and on [a, b] = [2, 5],
+// n = 3, Delta t = 1: 2, 3, 4, 5; on [2, 8], Delta t = 2: 2, 4, 6, 8.
+TEST(Parameters, EquidistantStepIsDeltaTNotesSlip) {
+  const std::vector<double> unit =
+      unit_interval_parameters(parameters(kFourPoints, Parameterization::kUniform));
+  expect_parameters(unit, {0, 1.0 / 3, 2.0 / 3, 1}, kHandTolerance);
+  using Interval = std::tuple<double, double, std::vector<double>>;
+  for (const auto& [a, b, expected] :
+       {Interval{2.0, 5.0, {2, 3, 4, 5}}, Interval{2.0, 8.0, {2, 4, 6, 8}}}) {
+    std::vector<double> t;
+    for (const double u : unit) t.push_back(a + (b - a) * u);
+    expect_parameters(t, expected, kHandTolerance);
+  }
 }
 
 // Chord lengths 5, 1, 5 summed: 0, 5, 6, 11; closed adds sqrt(5): 11 + sqrt(5).

@@ -285,6 +285,49 @@ TEST(BezierSurface, PartitionOfUnityCornersAndConvexHull) {
   }
 }
 
+// ch. 1 §1.7 "Bézier tensor product": the biquadratic monomial basis is the (2 + 1)^2 = 9
+// products s^p t^q, {1, s, t, st, s^2, t^2, s^2 t, s t^2, s^2 t^2}; the notes list eight, without
+// s^2 t. A biquadratic patch makes s^2 t: in degree 2 Bernstein coefficients s^2 is (0, 0, 1) and
+// t is (0, 1/2, 1) (t = B_1^2/2 + B_2^2), so z_ij = [i == 2] j/2 gives z = s^2 t, and
+// x_ij = i/2, y_ij = j/2 give x = s, y = t.
+TEST(BezierSurface, BiquadraticPatchMakesS2TNotesSlip) {
+  BezierSurface S;
+  S.n = S.m = 2;
+  for (int i = 0; i <= 2; ++i)
+    for (int j = 0; j <= 2; ++j) S.P.push_back({i / 2.0, j / 2.0, i == 2 ? j / 2.0 : 0.0});
+  for (int a = 0; a <= 10; ++a)
+    for (int b = 0; b <= 10; ++b) {
+      const double s = a / 10.0, t = b / 10.0;
+      const Vec3 X = surface_point(S, s, t);
+      EXPECT_NEAR(X.x, s, kSameValue);
+      EXPECT_NEAR(X.y, t, kSameValue);
+      EXPECT_NEAR(X.z, s * s * t, kSameValue) << "s=" << s << " t=" << t;
+    }
+}
+
+// ch. 1 §1.7 "Properties of Bézier surfaces", property 2: b_ij has the greatest influence at
+// (s, t) = (i/m, j/n); the notes print (i/m, i/n). Its weight B_i^m(s) B_j^n(t) is a product
+// whose factors peak at i/m and j/n (ch. 1 §1.6, "Properties of Bézier segments", property 8).
+// With m = 3, n = 2 the two differ for every i != 0: b_10 weighs B_1^3(1/3) = 4/9 at (1/3, 0)
+// and 4/9 x 1/4 = 1/9 at (1/3, 1/2). Grid step 1/60 holds every i/3 and j/2.
+TEST(BezierSurface, WeightOfBijPeaksAtIOverMJOverNNotesSlip) {
+  const int m = 3, n = 2, steps = 60;
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j) {
+      int best_a = 0, best_b = 0;
+      double best = -1;
+      for (int a = 0; a <= steps; ++a)
+        for (int b = 0; b <= steps; ++b) {
+          const double w = bernstein(i, m, double(a) / steps) * bernstein(j, n, double(b) / steps);
+          if (w > best) best = w, best_a = a, best_b = b;
+        }
+      EXPECT_EQ(best_a, i * steps / m) << "b_" << i << j;
+      EXPECT_EQ(best_b, j * steps / n) << "b_" << i << j;
+    }
+  EXPECT_NEAR(bernstein(1, 3, 1.0 / 3) * bernstein(0, 2, 0.0), 4.0 / 9, kSameValue);
+  EXPECT_NEAR(bernstein(1, 3, 1.0 / 3) * bernstein(0, 2, 0.5), 1.0 / 9, kSameValue);
+}
+
 TEST(BezierSurface, AffineInvariance) {
   // notes "Higher Order Surfaces", "Affine Invariance": Phi(sum p_ij b_i b_j) = sum Phi(p_ij) b_i b_j.
   std::mt19937 rng(11);
