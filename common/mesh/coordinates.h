@@ -1,6 +1,6 @@
 // common/mesh/coordinates.h — Cartesian, spherical and cylindrical coordinates
 // (lecture notes "B-Spline Polynomials", "3-D Graphics", "Problem # 1:
-// Modeling" and "Conversions"). No GL; lab 36 builds a sphere and a cylinder
+// Modeling" and "Conversions"). No GL; lab 35 builds a sphere and a cylinder
 // from them.
 //
 // The notes' convention, kept here (right-handed, z up):

@@ -1,4 +1,4 @@
-// tests/labs/35_patch_subdivision_test.cpp — what lab 35's views promise: the
+// tests/labs/34_patch_subdivision_test.cpp — what lab 34's views promise: the
 // piece count printed is the core's split_adaptive (lecture notes "Higher Order
 // Surfaces", "Splitting Termination"), and cracks_closed shows less background
 // than cracks (the T-junction cracks of "Patch Cracking" are filled).
@@ -21,8 +21,8 @@ using gllab::testing::ScratchDir;
 using gllab::testing::view_text;
 namespace sp = gllab::spline;
 
-const std::string kLab = "35_patch_subdivision";
-// The lab's patch (labs/35_patch_subdivision, "Lab data") and its maximum depth.
+const std::string kLab = "34_patch_subdivision";
+// The lab's patch (labs/34_patch_subdivision, "Lab data") and its maximum depth.
 const std::vector<sp::Vec3> kPatch = {
     {-1.15, -0.78, 0.0}, {-0.75, -0.31, 0.0}, {-0.75, 0.31, 0.0}, {-1.15, 0.78, 0.0},
     {-0.80, -1.39, 0.0}, {-0.10, -0.55, 0.0}, {-0.10, 0.55, 0.0}, {-0.80, 1.39, 0.0},
@@ -31,7 +31,7 @@ const std::vector<sp::Vec3> kPatch = {
 constexpr int kMaxDepth = 4;
 
 TEST(PatchSubdivisionLab, PrintedPieceCountIsTheCores) {
-  ScratchDir dir("lab35");
+  ScratchDir dir("lab34");
   for (const char* tol : {"0.2", "0.1", "0.05"}) {
     const auto lines = view_text(kLab, dir, "cracks", {std::string("tolerance=") + tol});
     const std::vector<double> count = numbers_before(lines, " pieces");
@@ -44,7 +44,7 @@ TEST(PatchSubdivisionLab, PrintedPieceCountIsTheCores) {
 // The magenta clear colour (1, 0, 1) below the text panel: cracks show it through
 // the gaps, cracks_closed over the same pieces shows strictly less of it.
 TEST(PatchSubdivisionLab, ClosedViewFillsTheCracks) {
-  ScratchDir dir("lab35");
+  ScratchDir dir("lab34");
   const std::vector<gllab::testing::Rgb8> magenta = {{255, 0, 255}};
   const long long open = mask_count(colour_mask(render_view(kLab, dir, "cracks"), magenta, 0, 60));
   const long long closed =

@@ -1,4 +1,4 @@
-// lab 35 · splitting Bézier patches                              difficulty: ★★★☆
+// lab 34 · splitting Bézier patches                              difficulty: ★★★☆
 // A bicubic patch split for drawing (lecture notes "Higher Order Surfaces",
 // "Rendering Bezier Patches": "Patch Splitting", "Splitting Termination",
 // "Patch Cracking"): each direction is split on its own by de Casteljau; a
@@ -13,7 +13,7 @@
 // Keys: [t]/[T] flatness tolerance  [c] control nets
 //   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
 // Views: cracks, cracks_closed, diagonal_curve, subdivision_net
-// Reference: reference_images/35_patch_subdivision__*.png
+// Reference: reference_images/34_patch_subdivision__*.png
 
 #include <string>
 #include <vector>
@@ -140,8 +140,8 @@ void init() {
 
 // Lab definition -----------------------------------------------------------
 gllab::Lab gllab::define_lab() {
-  gllab::Lab lab{"35_patch_subdivision",
-                 "lab 35 · splitting Bézier patches",
+  gllab::Lab lab{"34_patch_subdivision",
+                 "lab 34 · splitting Bézier patches",
                  {{"cracks", "pieces split to different depths: cracks", draw_cracks, kOrbit},
                   {"cracks_closed", "the same pieces, T-junctions snapped", draw_cracks_closed,
                    kOrbit},

@@ -1,4 +1,4 @@
-// tests/labs/36_quadric_coordinates_test.cpp — what lab 36 promises about its
+// tests/labs/35_quadric_coordinates_test.cpp — what lab 35 promises about its
 // views: the sphere built from spherical coordinates and the cylinder built
 // from cylindrical ones cover exactly what gluSphere and gluCylinder cover at
 // any slices and stacks (no orange left in the overlay), and level_of_detail
@@ -20,7 +20,7 @@ using gllab::testing::numbers_before;
 using gllab::testing::Rgb8;
 using gllab::testing::ScratchDir;
 
-const std::string kLab = "36_quadric_coordinates";
+const std::string kLab = "35_quadric_coordinates";
 
 // The overlay cell: x = 2.2 of ortho_fit(3.3) in a 512 x 512 image, 256/3.3
 // = 77.6 px per unit; the cell is the right third, [341, 512) (its neighbour's
@@ -41,7 +41,7 @@ long long overlay_pixels(const gllab::Image& im, Rgb8 colour) {
 // units, hides GLU everywhere. Counts that are multiples of 4 and counts that
 // are not (there a sphere started at theta = 0 would differ), and GLU's minimum.
 TEST(QuadricCoordinatesLab, OwnSphereAndCylinderCoverGluExactly) {
-  ScratchDir dir("lab36");
+  ScratchDir dir("lab35");
   const std::vector<std::vector<std::string>> counts = {
       {}, {"slices=7", "stacks=5"}, {"slices=2", "stacks=1"}, {"slices=20", "stacks=3"},
       {"slices=64", "stacks=64"}};
@@ -99,7 +99,7 @@ void check_lod(const std::vector<std::string>& text, const Expected& want, doubl
 }
 
 TEST(QuadricCoordinatesLab, LevelOfDetailPrintsTheFewestSlicesWithinHalfAPixel) {
-  ScratchDir dir("lab36");
+  ScratchDir dir("lab35");
   const std::vector<std::string> text = gllab::testing::view_text(kLab, dir, "level_of_detail");
   check_lod(text, expected_lod(0.5, 1), 0.5);
   // The nearest sphere, 78 px in radius, needs 28 slices; 18 leave it 1.19 px off.
@@ -107,7 +107,7 @@ TEST(QuadricCoordinatesLab, LevelOfDetailPrintsTheFewestSlicesWithinHalfAPixel) 
 }
 
 TEST(QuadricCoordinatesLab, LevelOfDetailFollowsTheErrorBound) {
-  ScratchDir dir("lab36");
+  ScratchDir dir("lab35");
   check_lod(gllab::testing::view_text(kLab, dir, "level_of_detail", {"error_px=2"}),
             expected_lod(2, 1), 2);
 }
@@ -115,7 +115,7 @@ TEST(QuadricCoordinatesLab, LevelOfDetailFollowsTheErrorBound) {
 // The wheel's zoom scales the projection: every sphere covers twice the pixels,
 // and the counts follow (the lab reads f from the projection matrix).
 TEST(QuadricCoordinatesLab, LevelOfDetailFollowsTheZoom) {
-  ScratchDir dir("lab36");
+  ScratchDir dir("lab35");
   const gllab::ProcessResult r = gllab::run_process(
       {gllab::testing::headless(kLab), "--view", "level_of_detail", "--camera", "0,0,2",
        "--print-text", "--out", (dir / "zoom.png").string()});

@@ -1,4 +1,4 @@
-// lab 36 · quadric coordinates                                difficulty: ★★☆☆
+// lab 35 · quadric coordinates                                difficulty: ★★☆☆
 // A sphere from the notes' spherical coordinates (x = ρ sin φ cos θ, y = ρ sin φ sin θ,
 // z = ρ cos φ: lecture notes "B-Spline Polynomials", "Conversions"), a cylinder from
 // cylindrical (r, θ, z), by glBegin/glNormal/glVertex beside gluSphere and gluCylinder (ch. 1,
@@ -10,7 +10,7 @@
 // Keys: [s]/[S] slices  [t]/[T] stacks  [e]/[E] error in pixels
 //   right-drag turn  wheel zoom  [0] reset camera  [h] help  [Esc] quit
 // Views: spherical_vs_glu, cylindrical_vs_glu, level_of_detail
-// Reference: reference_images/36_quadric_coordinates__*.png
+// Reference: reference_images/35_quadric_coordinates__*.png
 
 #include <algorithm>
 #include <cmath>
@@ -182,8 +182,8 @@ void init() {
 // Lab definition -----------------------------------------------------------
 gllab::Lab gllab::define_lab() {
   gllab::Lab lab{
-      "36_quadric_coordinates",
-      "lab 36 · quadric coordinates",
+      "35_quadric_coordinates",
+      "lab 35 · quadric coordinates",
       {{"spherical_vs_glu", "sphere from (rho, theta, phi) vs gluSphere", draw_spherical, kOrbit},
        {"cylindrical_vs_glu", "cylinder from (r, theta, z) vs gluCylinder", draw_cylindrical,
         kOrbit},
