@@ -1,9 +1,9 @@
 // lab 13 · cubic splines                                     difficulty: ★★★☆
-// Interpolating cubic splines (lecture notes ch. 1, §1.6 Spline
-// representations, "Cubic splines", "Parameterizations"): natural, clamped and
-// periodic end conditions on the same points; the parameterization (uniform,
-// chordal, centripetal, Foley) with curvature combs; the affine-invariant
-// Nielson metric under a shear; and a wing section whose trailing edge is a cusp.
+// Interpolating cubic splines (lecture notes ch. 1, §1.6 Spline representations, "Cubic
+// splines", "Parameterizations"): natural, clamped and periodic end conditions on the same
+// points; the parameterization (uniform, chordal, centripetal, Foley) with curvature combs;
+// the affine-invariant Nielson metric under a shear; a wing section whose trailing edge is a
+// cusp; a B-spline through a tripled control point (notes "B-Spline Polynomials").
 // Notice: the same points give four different curves: the parameter is time,
 //   and uniform time over uneven chords makes the curve overshoot (long comb
 //   teeth). Nielson's parameters do not change under a shear, so the spline
@@ -12,7 +12,7 @@
 //   In wing_cusp, why does the periodic spline round the trailing edge off?
 // Keys: [m]/[M] parameterization  [c] combs  [s]/[S] shear  [o]/[O] overlay
 //   [n] labels  [mouse] drag  [p] print  [h] help  [Esc] quit
-// Views: end_conditions, parameterizations, nielson_shear, wing_cusp
+// Views: end_conditions, parameterizations, nielson_shear, wing_cusp, forced_point
 // Reference: reference_images/13_cubic_splines__*.png
 
 #include <algorithm>
@@ -198,6 +198,26 @@ void draw_wing_cusp(const gllab::State& s) {
         {kPeriodic});
 }
 
+// Notes "B-Spline Polynomials", "Forcing Interpolation": P[3] 1, 2, 3 times; 3: (P+4P+P)/6 = P.
+void draw_forced_point(const gllab::State& s) {
+  gllab::ortho_fit(s.width, s.height, 5.5, 5.5);
+  const std::vector<Vec3>& P = s.points("P");
+  for (std::vector<Vec3> Q = P; Q.size() < P.size() + 3; Q.insert(Q.begin() + 3, P[3])) {
+    std::vector<Vec3> C;  // segment i (Q[i..i+3]) at t = k / 64, the joints t = 0 among them
+    for (int i = 0; i + 3 < int(Q.size()); ++i)
+      for (int k = 0; k <= 64; ++k) C.push_back(sp::uniform_cubic_point(Q, i, k / 64.0));
+    const std::size_t m = Q.size() - P.size() + 1;  // P[3] taken m times
+    const Rgb c = std::array<Rgb, 3>{kClamped, kNatural, kPeriodic}[m - 1];
+    double d = 1e300;  // distance from P[3] to the nearest curve point
+    glColor3f(c.r, c.g, c.b), glLineWidth(9.5f - 2.5f * m);  // 7, 4.5, 2 px: all three show
+    glBegin(GL_LINE_STRIP);
+    for (const Vec3& q : C) glVertex3d(q.x, q.y, q.z), d = std::min(d, sp::norm(q - P[3]));
+    glEnd();
+    panel(s, -5.3, -2.6 - 0.6 * m, {format_text("P[3] %zu times: distance %.4f", m, d)}, {c});
+  }
+  gllab::draw_control_points(s, "P", kData, 9.f, true);
+}
+
 // init ----------------------------------------------------------------------
 void init() { glClearColor(0.1f, 0.1f, 0.12f, 1.f); }
 
@@ -211,7 +231,8 @@ gllab::Lab gllab::define_lab() {
       {{"end_conditions", "natural, clamped, periodic splines, one data set", draw_end_conditions},
        {"parameterizations", "uniform, chordal, centripetal, Foley; combs", draw_parameterizations},
        {"nielson_shear", "Nielson metric vs chord length under a shear", draw_nielson_shear},
-       {"wing_cusp", "wing section: natural spline, cusp at both ends; periodic", draw_wing_cusp}},
+       {"wing_cusp", "wing section: natural spline, cusp at both ends; periodic", draw_wing_cusp},
+       {"forced_point", "uniform cubic B-spline, P[3] taken 1, 2, 3 times", draw_forced_point}},
       {{"method", 1, 0, 4, "0 uniform 1 chordal 2 centripetal 3 Foley 4 Nielson"},
        {"combs", 1, 0, 1, "curvature combs (parameterizations, wing_cusp)"},
        {"comb", 0.2, 0, 3, "comb tooth length per unit of curvature"},

@@ -1,5 +1,5 @@
 // tests/labs/13_cubic_splines_test.cpp — lab 13's promise about the
-// nielson_shear view: with the Nielson metric the spline of the sheared
+// nielson_shear view (and forced_point, below): with the Nielson metric the spline of the sheared
 // points IS the sheared spline; with chord lengths it is not.
 //
 // Origin: lecture notes ch. 1, §1.6 Spline representations, "Nielson metric":
@@ -14,6 +14,7 @@
 // evenly spaced parameters of their domains, in the same ink.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,28 @@ TEST(CubicSplinesLab, OverlaysDrawSomethingDifferent) {
   const gllab::Image both = render_view(kLab, dir, "nielson_shear", {"labels=0"});
   const gllab::Image one = render_view(kLab, dir, "nielson_shear", {"labels=0", "overlay=1"});
   EXPECT_GT(gllab::testing::pixels_differing(cell(both, false), cell(one, false)), kDifferentCurvePixels);
+}
+
+// forced_point (lecture notes "B-Spline Polynomials", "Forcing Interpolation"): P[3] taken 1, 2
+// and 3 times in a uniform cubic B-spline. The joint of segments with Q[i..i+2] = P, P, P is
+// (1/6)(P + 4P + P) = P (the matrix form's row t = 0: 1/6, 4/6, 1/6), so at 3 the printed
+// distance is 0 up to rounding. At 1 and 2 the curve misses P: the joints nearest to it are
+// (P[2] + 4P + P[4])/6, 0.425 away, and (P[2] + 5P)/6, |P[2] - P|/6 = 0.420 away (lab data).
+constexpr double kOnThePoint = 5e-5;  // lab units: the view prints %.4f (measured 2.3e-16)
+
+TEST(CubicSplinesLab, TripledControlPointIsOnTheUniformBspline) {
+  ScratchDir dir("lab13");
+  const std::vector<std::string> text = gllab::testing::view_text(kLab, dir, "forced_point");
+  const std::vector<double> once = gllab::testing::numbers_after(text, "P[3] 1 times: distance ");
+  const std::vector<double> twice = gllab::testing::numbers_after(text, "P[3] 2 times: distance ");
+  const std::vector<double> thrice = gllab::testing::numbers_after(text, "P[3] 3 times: distance ");
+  ASSERT_EQ(once.size(), 1u);
+  ASSERT_EQ(twice.size(), 1u);
+  ASSERT_EQ(thrice.size(), 1u);
+  EXPECT_GT(once[0], kOnThePoint);
+  EXPECT_GT(twice[0], kOnThePoint);
+  EXPECT_LE(twice[0], 0.42);  // at most the joint's distance |P[2] - P|/6 = 0.4197
+  EXPECT_LE(std::fabs(thrice[0]), kOnThePoint);
 }
 
 // method has the range [0, 4] (uniform .. Nielson): the harness rejects 5.
