@@ -129,8 +129,7 @@ void draw_nielson_shear(const gllab::State& s) {
   const int only = s.integer("overlay");
   std::vector<std::string> lines;
   for (int c = 0; c < 2; ++c) {
-    const std::vector<double> tp = sp::parameters(P, methods[c]);
-    const std::vector<double> tq = sp::parameters(Q, methods[c]);
+    const auto tp = sp::parameters(P, methods[c]), tq = sp::parameters(Q, methods[c]);
     const sp::CubicSpline original = sp::natural_cubic_spline(tp, P);
     const sp::CubicSpline sheared = sp::natural_cubic_spline(tq, Q);
     const Rgb ink = method_colour(c == 0 ? 4 : 1);
@@ -154,8 +153,7 @@ void draw_nielson_shear(const gllab::State& s) {
     gllab::draw_dots(Q, kData, 7.f);
     glPopMatrix();
     double moved = 0;  // how far the unit parameters move under the shear
-    const std::vector<double> up = sp::unit_interval_parameters(tp);
-    const std::vector<double> uq = sp::unit_interval_parameters(tq);
+    const auto up = sp::unit_interval_parameters(tp), uq = sp::unit_interval_parameters(tq);
     for (std::size_t i = 0; i < up.size(); ++i) moved = std::max(moved, std::fabs(up[i] - uq[i]));
     lines.push_back(format_text("%-8s t_i of P: ", sp::parameterization_name(methods[c])) +
                     unit_parameters_text(tp));
@@ -190,30 +188,32 @@ void draw_wing_cusp(const gllab::State& s) {
   }
   panel(s, -6.8, 6.8,
         {"natural spline from the trailing edge round and back:",
-         "  a cusp at W[0], as the lecture notes' wing section"},
-        {kNatural});
+         "  a cusp at W[0], as the lecture notes' wing section"}, {kNatural});
   panel(s, -6.8, -0.2,
         {"periodic spline through the same points:",
-         "  C2 at W[0], so the trailing edge is rounded"},
-        {kPeriodic});
+         "  C2 at W[0], so the trailing edge is rounded"}, {kPeriodic});
 }
 
 // Notes "B-Spline Polynomials", "Forcing Interpolation": P[3] 1, 2, 3 times; 3: (P+4P+P)/6 = P.
 void draw_forced_point(const gllab::State& s) {
   gllab::ortho_fit(s.width, s.height, 5.5, 5.5);
   const std::vector<Vec3>& P = s.points("P");
-  for (std::vector<Vec3> Q = P; Q.size() < P.size() + 3; Q.insert(Q.begin() + 3, P[3])) {
-    std::vector<Vec3> C;  // segment i (Q[i..i+3]) at t = k / 64, the joints t = 0 among them
-    for (int i = 0; i + 3 < int(Q.size()); ++i)
-      for (int k = 0; k <= 64; ++k) C.push_back(sp::uniform_cubic_point(Q, i, k / 64.0));
-    const std::size_t m = Q.size() - P.size() + 1;  // P[3] taken m times
+  for (int m = 1; m <= 3; ++m) {  // P[3] taken m times
+    std::vector<Vec3> Q = P;
+    Q.insert(Q.begin() + 3, m - 1, P[3]);
     const Rgb c = std::array<Rgb, 3>{kClamped, kNatural, kPeriodic}[m - 1];
-    double d = 1e300;  // distance from P[3] to the nearest curve point
-    glColor3f(c.r, c.g, c.b), glLineWidth(9.5f - 2.5f * m);  // 7, 4.5, 2 px: all three show
-    glBegin(GL_LINE_STRIP);
-    for (const Vec3& q : C) glVertex3d(q.x, q.y, q.z), d = std::min(d, sp::norm(q - P[3]));
+    glColor3f(c.r, c.g, c.b);
+    glLineWidth(9.5f - 2.5f * m);  // 7, 4.5, 2 px: all three show
+    double d = 1e300;              // distance from P[3] to the nearest curve point
+    glBegin(GL_LINE_STRIP);  // segment i (Q[i..i+3]) at t = k / 64, the joints t = 0 among them
+    for (int i = 0; i + 3 < int(Q.size()); ++i)
+      for (int k = 0; k <= 64; ++k) {
+        const Vec3 q = sp::uniform_cubic_point(Q, i, k / 64.0);
+        glVertex3d(q.x, q.y, q.z);
+        d = std::min(d, sp::norm(q - P[3]));
+      }
     glEnd();
-    panel(s, -5.3, -2.6 - 0.6 * m, {format_text("P[3] %zu times: distance %.4f", m, d)}, {c});
+    panel(s, -5.3, -2.6 - 0.6 * m, {format_text("P[3] %d times: distance %.4f", m, d)}, {c});
   }
   gllab::draw_control_points(s, "P", kData, 9.f, true);
 }
