@@ -5,6 +5,8 @@
 //   curve_derivs     C(u) and C'(u) for the same
 //   surface_normals  S(u, v) and the unit normal of a bicubic rational 20 x 20 surface, 300 x 300 grid
 //   natural_spline   the natural cubic spline through 10^6 + 1 nodes (the O(n) tridiagonal solve)
+//   uniform_plot     the notes' plot of a uniform cubic B-spline, 1,000 points x 100 steps per segment:
+//                    forward differences against Horner and against the batched evaluator
 // First every contestant runs once and is compared with the own core (the
 // agreement table); then Google Benchmark times them (points/s counters); then
 // a summary prints points/s, the ratios own / peer and the agreement again.
@@ -33,6 +35,7 @@
 #include "rate_reporter.h"
 #include "spline/bspline.h"
 #include "spline/cubic_spline.h"
+#include "spline/forward_differences.h"
 #include "spline/surface.h"
 #include "spline/tessellate.h"
 
@@ -351,7 +354,7 @@ void size_buffers(const BenchData& d) {
   const std::size_t curve = d.curve_u.size(), grid = d.grid_u.size() * d.grid_v.size();
   for (auto& e : g_entries) {
     const std::size_t n = (e->task == "surface_normals" ? grid : curve) * (e->name == "glu_tessellator" ? 2 : 1);
-    if (e->task == "natural_spline") continue;
+    if (e->task == "natural_spline" || e->task == "uniform_plot") continue;
     e->out.resize(n);
     if (e->task != "curve_points") e->aux.resize(n);
   }
@@ -405,6 +408,46 @@ void add_spline_entries(const BenchData& d) {
     e.mismatch = jump > kSplineC2Tolerance || ends > kSplineC2Tolerance;
     e.agreement = "C2 jump " + sci(jump) + ", |S''| at ends " + sci(ends) + " (relative)";
   };
+}
+
+// The notes' "Plotting Uniform Cubic B-Splines": the first kPlotPoints 3D
+// points of the spline data as control points, kPlotSteps steps per segment.
+// All own: the question is what forward differences buy over Horner (the
+// brute-force loop) and over the general batched B-spline evaluator.
+constexpr std::size_t kPlotPoints = 1000;
+constexpr int kPlotSteps = 100;
+
+void add_plot_entries(const BenchData& d) {
+  static const std::vector<Vec3> P(d.spline_P.begin(), d.spline_P.begin() + kPlotPoints);
+  const auto plot = [](sp::CubicMethod method) {
+    return [method](Entry& e) {
+      e.out = sp::plot_uniform_cubic_bspline(P, kPlotSteps, method);
+      return e.out.size();
+    };
+  };
+  add("uniform_plot", "own_horner", Role::kOwn, plot(sp::CubicMethod::kHornerDouble));
+  add("uniform_plot", "own_forward_diff", Role::kOwn, plot(sp::CubicMethod::kForwardDouble));
+  Entry& f = add("uniform_plot", "own_forward_float", Role::kOwn, plot(sp::CubicMethod::kForwardFloat));
+  f.check = [](Entry& e) {  // float: within float's tolerance of Horner in double
+    const auto exact = sp::plot_uniform_cubic_bspline(P, kPlotSteps, sp::CubicMethod::kHornerDouble);
+    const double dp = max_diff(e.out, exact);
+    e.agreement = "|dP| " + sci(dp) + " (float)";
+    e.mismatch = dp > kFloatRelTolerance * max_norm(exact);
+  };
+  // The same curve as a B-spline on uniform knots 0, 1, ..., n + 4: segment i
+  // (P[i..i+3]) is u in [3 + i, 4 + i]; the parameters in the plot's order.
+  static sp::BsplineCurve curve;
+  curve.p = 3;
+  curve.P = P;
+  curve.U = sp::uniform_knots(static_cast<int>(P.size()) - 1, 3);
+  static std::vector<double> u;
+  for (std::size_t i = 0; i + 3 < P.size(); ++i)
+    for (int k = i == 0 ? 0 : 1; k <= kPlotSteps; ++k) u.push_back(3.0 + i + double(k) / kPlotSteps);
+  add("uniform_plot", "own_batched", Role::kOwn, [](Entry& e) {
+    e.out.resize(u.size());
+    sp::curve_points(curve, u, e.out);
+    return u.size();
+  });
 }
 
 // ---- agreement ---------------------------------------------------------------------
@@ -561,6 +604,16 @@ void print_summary() {
                 best->rate / 1e6, own->rate / 1e6, r, r >= 3 ? "met" : "NOT met");
     std::printf("\n");
   }
+  // uniform_plot has no peer: the ratios that matter are forward differences
+  // against the two ways of evaluating every point afresh.
+  const auto rate_of = [](const char* name) {
+    for (auto& ep : g_entries)
+      if (ep->task == "uniform_plot" && ep->name == name) return ep->rate;
+    return 0.0;
+  };
+  const double fd = rate_of("own_forward_diff");
+  std::printf("\nuniform_plot: forward differences %s Horner, %s the batched B-spline evaluator\n",
+              ratio_text(fd, rate_of("own_horner")).c_str(), ratio_text(fd, rate_of("own_batched")).c_str());
 }
 
 }  // namespace
@@ -582,6 +635,7 @@ int main(int argc, char** argv) {
   add_curve_entries(data, peers);
   add_surface_entries(data, peers);
   add_spline_entries(data);
+  add_plot_entries(data);
   size_buffers(data);
 
   std::printf("Agreement with the own core (one run of each contestant before timing):\n");

@@ -23,7 +23,7 @@
 
 namespace gllab::spline {
 
-/// At most this many steps per call (each makes one point).
+/// At most this many steps per call, and points per plot (each step makes one point).
 inline constexpr int kMaxForwardDifferenceSteps = 1 << 24;
 
 /// Q(k / steps), k = 0..steps, of the cubic with coefficients abcd = (a, b, c, d)
@@ -43,11 +43,13 @@ std::vector<Vec3> cubic_by_horner(const std::array<Vec3, 4>& abcd, int steps);
 enum class CubicMethod { kForwardFloat, kForwardDouble, kHornerFloat, kHornerDouble };
 double cubic_plot_error(const std::array<Vec3, 4>& abcd, int steps, CubicMethod method);
 
-/// The notes' brute-force plot of a uniform cubic B-spline, one segment per
-/// four consecutive points P[i-3..i], i = 3..m, each drawn with `steps` forward
-/// differences in double; a polyline of (m - 2) steps + 1 points (each segment
-/// starts where the previous one ends, so the joints are not repeated).
-/// At least 4 points and finite; steps as above.
-std::vector<Vec3> plot_uniform_cubic_bspline(const std::vector<Vec3>& P, int steps);
+/// The notes' plot of a uniform cubic B-spline, one segment per four
+/// consecutive points P[i-3..i], i = 3..m, each drawn with `steps` steps by
+/// `method` (forward differences in double by default; Horner for comparison):
+/// a polyline of (m - 2) steps + 1 points (each segment starts where the
+/// previous one ends, so the joints are not repeated). At least 4 finite points;
+/// steps as above.
+std::vector<Vec3> plot_uniform_cubic_bspline(const std::vector<Vec3>& P, int steps,
+                                             CubicMethod method = CubicMethod::kForwardDouble);
 
 }  // namespace gllab::spline

@@ -77,6 +77,15 @@ TEST(ForwardDifferences, UniformBsplinePlotLiesOnTheCurve) {
                                testing::kSameCurve);
 }
 
+// The plot by forward differences and by Horner: the same points to rounding.
+TEST(ForwardDifferences, PlotMethodsAgree) {
+  const std::vector<Vec3> P = {{-4, 1, 0}, {-3, 3, 0}, {-2, 4, 0}, {-1, 2, 0}, {1, 3, 0}, {2, 1, 0}};
+  const auto fd = plot_uniform_cubic_bspline(P, 200);
+  const auto horner = plot_uniform_cubic_bspline(P, 200, CubicMethod::kHornerDouble);
+  ASSERT_EQ(fd.size(), horner.size());
+  for (std::size_t k = 0; k < fd.size(); ++k) testing::expect_near_vec(fd[k], horner[k], testing::kSameCurve);
+}
+
 // The notes' brute-force loop, run as written with delta = 0.05: t reaches
 // 0.05 * 20 = 1.0000000000000002 > 1 after 20 points, so t = 1 is never drawn,
 // and as each segment starts with MoveTo, every joint has a gap of one step.
@@ -99,6 +108,8 @@ TEST(ForwardDifferences, BadInputIsNamed) {
   EXPECT_ERROR_HAS(cubic_by_horner<float>(zigzag(), kMaxForwardDifferenceSteps + 1), "steps=16777217");
   EXPECT_ERROR_HAS(plot_uniform_cubic_bspline({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, 10), "3 points");
   EXPECT_ERROR_HAS(plot_uniform_cubic_bspline({{0, 0, 0}, {1, 0, 0}, {2, NAN, 0}, {3, 0, 0}}, 10), "P[2]");
+  const std::vector<Vec3> many(1003, Vec3{1, 2, 3});  // 1000 segments x 2^15 steps > 2^24 points
+  EXPECT_ERROR_HAS(plot_uniform_cubic_bspline(many, 1 << 15), "1000 segments x steps=32768");
 }
 
 }  // namespace
