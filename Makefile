@@ -26,15 +26,22 @@
 #                    then grade_bench (labgrade over every view: wall seconds);
 #                    flags for spline_bench go in BENCH_ARGS, e.g.
 #                    make bench BENCH_ARGS=--benchmark_filter=curve
+#   make fuzz        build the libFuzzer targets of tests/fuzz/ in build-fuzz/ with clang
+#                    (ASan + UBSan) and run each for FUZZ_SECONDS (default 60) seconds;
+#                    FUZZ_OPT=-O0 builds twice as fast, runs slower (CI uses it)
+#                    (tests/fuzz/README.md; needs clang and libclang-rt-dev)
 #   make clean       remove build/, build-sanitize/, build-clang/, build-bench/ and out/
 
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
 CLANG_BUILD ?= build-clang
 BENCH_BUILD ?= build-bench
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_OPT ?= -O1
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build target run grade test references calibration sanitize clang bench clean
+.PHONY: all build target run grade test references calibration sanitize clang bench fuzz clean
 
 all: build
 
@@ -98,6 +105,16 @@ bench:
 	  else xvfb-run -a -s "-screen 0 1024x768x24" $(BENCH_BUILD)/bin/csg_bench $(CSG_BENCH_ARGS); fi; \
 	else echo "csg_bench: OpenCSG is not installed (libopencsg-dev; ./lab bench installs it): skipped"; fi
 	$(BENCH_BUILD)/bin/grade_bench $(GRADE_BENCH_ARGS)
+
+# The fuzzers (tests/fuzz/README.md): every library they link compiled for coverage
+# with ASan + UBSan at FUZZ_OPT; the labs and the test suite are not built there.
+fuzz:
+	tests/fuzz/run.sh check
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DGLLAB_FUZZ=ON \
+	  -DCMAKE_BUILD_TYPE=Fuzz -DCMAKE_CXX_FLAGS_FUZZ="$(FUZZ_OPT) -gline-tables-only" \
+	  -DCMAKE_C_FLAGS_FUZZ="$(FUZZ_OPT) -gline-tables-only"
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_json fuzz_options fuzz_grading
+	tests/fuzz/run.sh run $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(CLANG_BUILD) $(BENCH_BUILD) out
