@@ -7,22 +7,50 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstring>
+#include <limits>
 
 extern char** environ;
 
 namespace gllab {
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// After a kill, how long to keep reading what the program wrote before it
+// died; then its pipes are closed, whoever still holds them.
+constexpr double kDrainSeconds = 1;
+
+Clock::time_point after(double seconds) {
+  return Clock::now() +
+         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+// Milliseconds until t for poll(): at least 1, at most an int's range.
+int poll_ms(Clock::time_point t) {
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(t - Clock::now()).count();
+  return static_cast<int>(std::clamp<long long>(left + 1, 1, std::numeric_limits<int>::max()));
+}
+
+}  // namespace
+
 ProcessResult run_process(const std::vector<std::string>& argv,
                           const std::vector<std::string>& extra_env) {
-  return run_process(argv, extra_env, 0);
+  return run_process(argv, extra_env, ProcessLimits{});
 }
 
 ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env,
                           double timeout_seconds) {
+  return run_process(argv, extra_env, ProcessLimits{timeout_seconds, 0});
+}
+
+ProcessResult run_process(const std::vector<std::string>& argv,
+                          const std::vector<std::string>& extra_env, const ProcessLimits& limits) {
   ProcessResult result;
   int out_pipe[2], err_pipe[2];
   if (pipe2(out_pipe, O_CLOEXEC) != 0) {
@@ -76,29 +104,54 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::vecto
   std::string* sinks[2] = {&result.out, &result.err};
   int open_count = 2;
   char buffer[65536];
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
+  // NaN, 0 or less: no deadline; more than the cap: the cap (no overflow).
+  const bool has_deadline = limits.timeout_seconds > 0;
+  const auto deadline =
+      after(has_deadline ? std::min(limits.timeout_seconds, kMaxProcessTimeoutSeconds) : 0);
+  bool killed = false;
+  Clock::time_point drain_until{};
+  const auto kill_it = [&] {
+    kill(pid, SIGKILL);  // its pipes close when it dies; read what is left for a moment
+    killed = true;
+    drain_until = after(kDrainSeconds);
+  };
   while (open_count > 0) {
     int wait_ms = -1;
-    if (timeout_seconds > 0 && !result.timed_out) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-      if (left.count() <= 0) {
-        kill(pid, SIGKILL);  // its pipes close when it dies; keep reading until then
+    if (killed) {
+      if (Clock::now() >= drain_until) break;  // a child it left holds the pipes: stop
+      wait_ms = poll_ms(drain_until);
+    } else if (has_deadline) {
+      if (Clock::now() >= deadline) {
         result.timed_out = true;
-      } else {
-        wait_ms = static_cast<int>(left.count()) + 1;
+        kill_it();
+        continue;
       }
+      wait_ms = poll_ms(deadline);
     }
     const int ready = poll(fds, 2, wait_ms);
     if (ready < 0) {
       if (errno == EINTR) continue;
+      if (!killed) kill(pid, SIGKILL);  // cannot watch it any more: do not wait for it forever
       break;
     }
-    if (ready == 0) continue;  // the deadline passed: kill at the top of the loop
+    if (ready == 0) continue;  // a deadline passed: handled at the top of the loop
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
       if (n > 0) {
-        sinks[i]->append(buffer, static_cast<std::size_t>(n));
+        std::size_t keep = static_cast<std::size_t>(n);
+        if (limits.max_output_bytes > 0) {
+          const std::size_t room =
+              limits.max_output_bytes - std::min(limits.max_output_bytes, sinks[i]->size());
+          if (keep > room) {
+            keep = room;
+            if (!killed) {
+              result.output_exceeded = true;
+              kill_it();
+            }
+          }
+        }
+        sinks[i]->append(buffer, keep);
       } else if (n == 0 || errno != EINTR) {
         close(fds[i].fd);
         fds[i].fd = -1;
