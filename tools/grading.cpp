@@ -3,18 +3,24 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
-#include <fstream>
+#include <exception>
 #include <mutex>
+#include <numeric>
 #include <set>
+#include <sstream>
+#include <system_error>
 #include <thread>
 
 #include <unistd.h>
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
+#include "files/files.h"
 #include "image/pam.h"
 #include "process.h"
 
@@ -29,6 +35,50 @@ std::string joined(const std::set<std::string>& names) {
   for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
   return out;
 }
+
+std::string size_text(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// The lines of a text as std::getline reads them: no line after a final newline.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines.push_back(text.substr(at, end - at));
+    at = end + 1;
+  }
+  return lines;
+}
+
+// The width and height a PNG's header (IHDR) declares, read before decoding,
+// so that a file that would decode to gigabytes is refused first. Nothing
+// when the bytes do not start like a PNG (the decoder then says why).
+std::optional<std::pair<long long, long long>> png_header_size(const std::string& bytes) {
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 ||
+      bytes.compare(12, 4, "IHDR") != 0)
+    return std::nullopt;
+  const auto be32 = [&](std::size_t at) {
+    long long v = 0;
+    for (std::size_t k = 0; k < 4; ++k) v = v * 256 + static_cast<unsigned char>(bytes[at + k]);
+    return v;
+  };
+  return std::make_pair(be32(16), be32(20));
+}
+
+// A PNG's bytes decoded, no side above kMaxImageSide. `name` starts every
+// message ("reference x.png", "read_png: 'x.png'"). Throws ImageError.
+Image decode_checked_png(const std::string& bytes, const std::string& name) {
+  if (const auto size = png_header_size(bytes))
+    if (size->first > kMaxImageSide || size->second > kMaxImageSide)
+      throw ImageError(name + ": a PNG of " + std::to_string(size->first) + "x" +
+                       std::to_string(size->second) + " pixels, larger than the limit of " +
+                       std::to_string(kMaxImageSide) + " per side");
+  return decode_png(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), name);
+}
+
+std::string mib(std::uintmax_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 // A temporary file for a renderer's --text-out, removed when done.
 class TextFile {
@@ -48,10 +98,11 @@ class TextFile {
   TextFile& operator=(const TextFile&) = delete;
   const fs::path& path() const { return path_; }
 
-  // The sections "== VIEW N" + N lines, by view.
+  // The sections "== VIEW N" + N lines, by view. Throws files::FileError
+  // when the renderer left no regular file or one over kMaxTextFileBytes.
   std::map<std::string, std::vector<std::string>> sections() const {
     std::map<std::string, std::vector<std::string>> out;
-    std::ifstream in(path_, std::ios::binary);
+    std::istringstream in(files::read_input(path_.string(), kMaxTextFileBytes));
     for (std::string line; std::getline(in, line);) {
       if (line.rfind("== ", 0) != 0) break;  // not our format: no text
       const auto space = line.rfind(' ');
@@ -112,14 +163,17 @@ class BuildSource : public Source {
     const TextFile text;
     std::vector<std::string> argv = {program.string(), views.size() == 1 ? "--view" : "--views", list,
                                      "--out", "-", "--text-out", text.path().string()};
-    const ProcessResult r = run_process(argv, env_, timeout_ * static_cast<double>(views.size()));
+    const ProcessResult r = run_process(
+        argv, env_,
+        ProcessLimits{timeout_ * static_cast<double>(views.size()), kMaxRendererOutputBytes});
     // A batch that failed anywhere: every view on its own, for its own reason
     // (the text file is written only when all views were drawn).
-    if (views.size() > 1 && (!r.started || r.timed_out || r.exit_status != 0)) {
+    const bool ran = r.started && !r.timed_out && !r.output_exceeded && r.exit_status == 0;
+    if (views.size() > 1 && !ran) {
       for (const ViewId& v : views) out.push_back(render({v}).front());
       return out;
     }
-    if (r.started && !r.timed_out && r.exit_status == 0) {
+    if (ran) {
       std::size_t at = 0;
       try {
         while (out.size() < views.size())
@@ -133,10 +187,15 @@ class BuildSource : public Source {
         for (const ViewId& v : views) out.push_back(render({v}).front());
         return out;
       }
-      const auto sections = text.sections();
-      for (std::size_t i = 0; i < out.size(); ++i) {
-        const auto it = sections.find(views[i].view);
-        if (it != sections.end() && out[i].image) out[i].text = it->second;
+      try {
+        const auto sections = text.sections();
+        for (std::size_t i = 0; i < out.size(); ++i) {
+          const auto it = sections.find(views[i].view);
+          if (it != sections.end() && out[i].image) out[i].text = it->second;
+        }
+      } catch (const files::FileError& e) {
+        for (Obtained& o : out)
+          o = Obtained::failed(std::string("the renderer's text (--text-out) ") + e.what());
       }
       return out;
     }
@@ -147,7 +206,14 @@ class BuildSource : public Source {
   // One line: why a render gave no image.
   std::string why_not(const ProcessResult& r) const {
     if (!r.started) return first_line(r.err);
-    if (r.timed_out) return "the render took longer than " + std::to_string(int(timeout_)) + " s (killed)";
+    if (r.timed_out) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", timeout_);
+      return std::string("the render took longer than ") + seconds + " s (killed)";
+    }
+    if (r.output_exceeded)
+      return "the renderer wrote more than " + mib(kMaxRendererOutputBytes) +
+             " to stdout or stderr (killed)";
     std::string why = first_line(r.err);
     if (r.exit_status > 128)
       why = "crashed (signal " + std::to_string(r.exit_status - 128) + ")" + (why.empty() ? "" : ": " + why);
@@ -170,9 +236,12 @@ class ImageSource : public Source {
   explicit ImageSource(fs::path dir) : dir_(std::move(dir)) {}
   Image obtain(const ViewId& id) const override {
     const fs::path file = dir_ / (id.name() + ".png");
-    if (!fs::exists(file)) throw SubmissionError("no render " + file.string());
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw SubmissionError("no render " + file.string());
     try {
-      return read_png(file.string());
+      // A regular file within the limit: a FIFO is refused, not waited on.
+      return decode_checked_png(files::read_input(file.string(), kMaxImageFileBytes),
+                                "read_png: '" + file.string() + "'");
     } catch (const std::exception& e) {
       throw SubmissionError(e.what());
     }
@@ -180,11 +249,14 @@ class ImageSource : public Source {
   std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
     std::vector<Obtained> out = Source::obtain_batch(views);
     for (std::size_t i = 0; i < views.size(); ++i) {
-      std::ifstream in(dir_ / (views[i].name() + ".txt"), std::ios::binary);
-      if (!in) continue;
-      std::vector<std::string> lines;
-      for (std::string line; std::getline(in, line);) lines.push_back(line);
-      out[i].text = std::move(lines);
+      const fs::path file = dir_ / (views[i].name() + ".txt");
+      std::error_code ec;
+      if (!fs::exists(file, ec)) continue;
+      try {
+        out[i].text = lines_of(files::read_input(file.string(), kMaxTextFileBytes));
+      } catch (const files::FileError& e) {
+        out[i] = Obtained::failed(e.what());
+      }
     }
     return out;
   }
@@ -218,39 +290,94 @@ Profile parse_profile(const std::string& name) {
   throw UsageError("unknown profile '" + name + "' (profiles: build, images)");
 }
 
+std::optional<double> parse_number(const std::string& text, double lo, double hi) {
+  // Decimal only: from_chars reads no spaces and no '+', and this leaves out "0x1p3".
+  if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos)
+    return std::nullopt;
+  double v = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, v);
+  if (error != std::errc() || stop != end || !std::isfinite(v) || v < lo || v > hi)
+    return std::nullopt;
+  return v;
+}
+
+std::optional<long long> parse_integer(const std::string& text, long long lo, long long hi) {
+  long long v = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, v);
+  if (text.empty() || error != std::errc() || stop != end || v < lo || v > hi) return std::nullopt;
+  return v;
+}
+
 Manifest read_manifest(const fs::path& refs) {
   const fs::path path = refs / "MANIFEST";
-  std::ifstream in(path);
-  if (!in) throw UsageError("cannot read " + path.string() + " (run: make references)");
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw UsageError("cannot read " + path.string() + " (run: make references)");
+  try {
+    return parse_manifest(files::read_input(path.string(), kMaxTextFileBytes), path.string());
+  } catch (const files::FileError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+Manifest parse_manifest(const std::string& text, const std::string& name) {
   Manifest m;
-  for (std::string line; std::getline(in, line);) {
+  int line_number = 0;
+  for (std::string line : lines_of(text)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
     const auto colon = line.find(": ");
-    if (colon != std::string::npos) m.fields[line.substr(0, colon)] = line.substr(colon + 2);
+    if (colon == std::string::npos || colon == 0)
+      throw UsageError(name + ": line " + std::to_string(line_number) +
+                       " is not 'key: value' or a # comment");
+    const std::string key = line.substr(0, colon);
+    if (!m.fields.emplace(key, line.substr(colon + 2)).second)
+      throw UsageError(name + ": line " + std::to_string(line_number) + ": " + key +
+                       " is given twice");
   }
-  const auto number = [&](const std::string& key) {
+  const auto value = [&](const std::string& key) -> const std::string& {
     const auto it = m.fields.find(key);
-    if (it == m.fields.end()) throw UsageError(path.string() + ": no " + key);
-    try {
-      std::size_t used = 0;
-      const double v = std::stod(it->second, &used);
-      if (used != it->second.size() || !std::isfinite(v) || v < 0) throw std::invalid_argument(key);
-      return v;
-    } catch (const std::exception&) {
-      throw UsageError(path.string() + ": malformed " + key + " '" + it->second + "'");
-    }
+    if (it == m.fields.end()) throw UsageError(name + ": no " + key);
+    return it->second;
+  };
+  const auto bad = [&](const std::string& key, const std::string& what) {
+    return UsageError(name + ": " + key + " '" + value(key) + "' is not " + what);
+  };
+  const auto integer = [&](const std::string& key, int hi) {
+    const auto v = parse_integer(value(key), 0, hi);
+    if (!v) throw bad(key, "an integer from 0 to " + std::to_string(hi));
+    return static_cast<int>(*v);
+  };
+  const auto share = [&](const std::string& key) {
+    const auto v = parse_number(value(key), 0, 1);
+    if (!v) throw bad(key, "a number from 0 to 1");
+    return *v;
   };
   for (Profile p : {Profile::kBuild, Profile::kImages}) {
     Tolerance& t = p == Profile::kBuild ? m.build : m.images;
     const std::string prefix = std::string(profile_name(p)) + "_";
-    t.channel_threshold = static_cast<int>(number(prefix + "channel_threshold"));
-    t.shift_radius = static_cast<int>(number(prefix + "shift_radius"));
-    t.edge_contrast = static_cast<int>(number(prefix + "edge_contrast"));
-    t.max_differing_share = number(prefix + "max_unexcused_share");
-    t.max_shifted_share = number(prefix + "max_shifted_share");
+    t.channel_threshold = integer(prefix + "channel_threshold", 255);
+    t.shift_radius = integer(prefix + "shift_radius", kMaxShiftRadius);
+    t.edge_contrast = integer(prefix + "edge_contrast", 255);
+    t.max_differing_share = share(prefix + "max_unexcused_share");
+    t.max_shifted_share = share(prefix + "max_shifted_share");
   }
-  m.text_relative = number("text_relative_tolerance");
-  m.text_absolute = number("text_absolute_tolerance");
+  m.text_relative = share("text_relative_tolerance");
+  m.text_absolute = share("text_absolute_tolerance");
+  if (m.fields.count("size")) {
+    const std::string& size = value("size");
+    const auto x = size.find('x');
+    const auto w = parse_integer(size.substr(0, x), 1, kMaxImageSide);
+    const auto h =
+        x == std::string::npos ? std::nullopt : parse_integer(size.substr(x + 1), 1, kMaxImageSide);
+    if (!w || !h)
+      throw bad("size", "WIDTHxHEIGHT, each from 1 to " + std::to_string(kMaxImageSide));
+    m.width = static_cast<int>(*w);
+    m.height = static_cast<int>(*h);
+  }
   return m;
 }
 
@@ -294,6 +421,12 @@ std::vector<ViewId> select_views(const std::vector<ViewId>& all, const std::vect
 }
 
 std::unique_ptr<Source> build_source(const fs::path& dir, std::vector<std::string> env, double timeout_seconds) {
+  if (!(timeout_seconds > 0 && timeout_seconds <= kMaxTimeoutSeconds)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "a timeout of %g s is not in (0, %g]", timeout_seconds,
+                  kMaxTimeoutSeconds);
+    throw UsageError(text);
+  }
   if (!fs::is_directory(dir)) throw UsageError("no build folder " + dir.string());
   return std::make_unique<BuildSource>(dir, std::move(env), timeout_seconds);
 }
@@ -421,19 +554,66 @@ std::string text_difference(const std::vector<std::string>& reference, const std
 }
 
 Reference read_reference(const fs::path& refs, const ViewId& id) {
+  const auto read = [](const fs::path& file, std::uintmax_t max_bytes) {
+    try {
+      return files::read_input(file.string(), max_bytes);
+    } catch (const files::FileError& e) {
+      throw UsageError(std::string("reference ") + e.what());
+    }
+  };
   Reference r;
   if (id.error_view) {
-    std::ifstream in(refs / (id.name() + ".error"), std::ios::binary);
-    if (!in || !std::getline(in, r.error_line)) throw std::runtime_error("cannot read " + (refs / (id.name() + ".error")).string());
+    const fs::path file = refs / (id.name() + ".error");
+    const std::string text = read(file, kMaxTextFileBytes);
+    r.error_line = text.substr(0, text.find('\n'));
+    if (r.error_line.empty())
+      throw UsageError("reference " + file.string() +
+                       ": no line (the one line the view must exit 1 with)");
     return r;
   }
-  r.image = read_png((refs / (id.name() + ".png")).string());
-  std::ifstream in(refs / (id.name() + ".txt"), std::ios::binary);
-  if (in) {
-    r.text.emplace();
-    for (std::string line; std::getline(in, line);) r.text->push_back(line);
+  const fs::path png = refs / (id.name() + ".png");
+  try {
+    r.image = decode_checked_png(read(png, kMaxImageFileBytes), "reference " + png.string());
+  } catch (const ImageError& e) {
+    throw UsageError(e.what());
   }
+  const fs::path txt = refs / (id.name() + ".txt");
+  std::error_code ec;
+  if (fs::exists(txt, ec)) r.text = lines_of(read(txt, kMaxTextFileBytes));
   return r;
+}
+
+References read_references(const fs::path& refs, const std::vector<ViewId>& views,
+                           const Manifest* manifest) {
+  References out;
+  std::map<std::pair<int, int>, int> sizes;  // how many references have each size
+  for (const ViewId& v : views) {
+    const Reference& r = out[v.name()] = read_reference(refs, v);
+    if (!v.error_view) ++sizes[{r.image.width, r.image.height}];
+  }
+  if (sizes.empty()) return out;
+  // The MANIFEST's size, else the size most references have (ties: the first, by size).
+  std::pair<int, int> expected =
+      std::max_element(sizes.begin(), sizes.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;
+      })->first;
+  std::string whose =
+      "the size of " + std::to_string(sizes[expected]) + " of the " +
+      std::to_string(std::accumulate(sizes.begin(), sizes.end(), 0,
+                                     [](int n, const auto& s) { return n + s.second; })) +
+      " references";
+  if (manifest && manifest->width > 0) {
+    expected = {manifest->width, manifest->height};
+    whose = "the MANIFEST's size";
+  }
+  for (const ViewId& v : views) {
+    const Image& image = out[v.name()].image;
+    if (!v.error_view && std::make_pair(image.width, image.height) != expected)
+      throw UsageError("reference " + (refs / (v.name() + ".png")).string() + " is " +
+                       size_text(image.width, image.height) + ", not " +
+                       size_text(expected.first, expected.second) + " (" + whose + ")");
+  }
+  return out;
 }
 
 Judgement judgement(const Manifest& m, Profile p) { return {p, m.tolerance(p), m.text_relative, m.text_absolute}; }
@@ -464,6 +644,14 @@ std::map<std::string, std::pair<int, int>> Grade::by_lab() const {
 
 Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::path& refs, const Judgement& j,
             int jobs, bool keep_images, const Progress& progress) {
+  return grade(source, views, read_references(refs, views), j, jobs, keep_images, progress);
+}
+
+Grade grade(const Source& source, const std::vector<ViewId>& views, const References& references,
+            const Judgement& j, int jobs, bool keep_images, const Progress& progress) {
+  for (const ViewId& v : views)
+    if (!references.count(v.name()))
+      throw std::invalid_argument("grade: no reference for " + v.name());
   Grade g;
   g.submission = source.describe();
   g.views.resize(views.size());
@@ -474,10 +662,12 @@ Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::pa
     groups.back().push_back(i);
   }
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
   std::mutex report;
+  std::exception_ptr failure;  // the first error that stops the grading (under report)
   int done = 0;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < groups.size(); k = next++) {
+  auto work = [&] {
+    for (std::size_t k = next++; k < groups.size() && !stop; k = next++) {
       const std::vector<std::size_t>& group = groups[k];
       std::vector<ViewId> batch;
       for (std::size_t i : group) batch.push_back(views[i]);
@@ -491,17 +681,12 @@ Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::pa
                           static_cast<double>(batch.size());
       for (std::size_t b = 0; b < batch.size(); ++b) {
         const std::size_t i = group[b];
-        ViewResult r;
-        try {
-          const Reference reference = read_reference(refs, views[i]);
-          r = judge(views[i], std::move(renders[b]), reference, j, keep_images);
-          r.seconds = each;
-          // From a batch, a failure is confirmed by a render of its own.
-          if (!r.passed && r.comparison && batch.size() > 1) r = grade_view(source, views[i], reference, j, keep_images);
-        } catch (const std::exception& e) {
-          r.id = views[i];
-          r.reason = std::string("cannot read the reference: ") + e.what();
-        }
+        const Reference& reference = references.at(views[i].name());
+        ViewResult r = judge(views[i], std::move(renders[b]), reference, j, keep_images);
+        r.seconds = each;
+        // From a batch, a failure is confirmed by a render of its own.
+        if (!r.passed && r.comparison && batch.size() > 1)
+          r = grade_view(source, views[i], reference, j, keep_images);
         g.views[i] = std::move(r);
         std::lock_guard<std::mutex> lock(report);
         ++done;
@@ -509,10 +694,32 @@ Grade grade(const Source& source, const std::vector<ViewId>& views, const fs::pa
       }
     }
   };
+  // A source throws only when grading cannot go on (no temporary file, no
+  // memory): no thread may end the program with it, every one stops.
+  auto worker = [&] {
+    try {
+      work();
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(report);
+      if (!failure) failure = std::current_exception();
+      stop = true;
+    }
+  };
+  const int wanted = static_cast<int>(
+      std::min<std::size_t>(static_cast<std::size_t>(std::clamp(jobs, 1, kMaxJobs)),
+                            std::max<std::size_t>(1, groups.size())));
   std::vector<std::thread> threads;
-  for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(worker);
+  threads.reserve(static_cast<std::size_t>(wanted - 1));
+  for (int t = 1; t < wanted; ++t) {
+    try {
+      threads.emplace_back(worker);
+    } catch (const std::exception&) {  // std::system_error, or std::bad_alloc for its state
+      break;  // no more threads (a process or memory limit): those started share the work
+    }
+  }
   worker();
   for (std::thread& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
   return g;
 }
 

@@ -26,8 +26,23 @@
 // MANIFEST's relative tolerance. An error view (it must refuse to draw) has
 // reference_images/<lab>__<view>.error, the one line it must exit 1 with;
 // a build is graded on it, a folder of images cannot be.
+//
+// The instructor's files are checked before any grading: every reference the
+// views use must be a regular file that decodes, of the MANIFEST's size, and
+// every MANIFEST field must be in its range; a fault is a UsageError naming
+// the file or the field and its value (exit 2), never a student's failing row.
+//
+// Limits (tools/README.md lists them), each far above any real use:
+//   kMaxJobs                 256 renders at once (a 2-core machine uses 2)
+//   kMaxTimeoutSeconds       3600 s for one render (one takes well under 1 s)
+//   kMaxRendererOutputBytes  64 MiB of stdout or of stderr per renderer run (process.h)
+//   kMaxImageFileBytes       16 MiB per PNG file (the largest reference: 129 KB)
+//   kMaxImageSide            4096 pixels wide or high (every view: 512x512)
+//   kMaxTextFileBytes        1 MiB per text file: MANIFEST, <view>.txt, .error, a
+//                            renderer's --text-out (the largest: 1,830 bytes)
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -39,8 +54,28 @@
 
 #include "image/compare.h"
 #include "image/image.h"
+#include "process.h"
 
 namespace gllab::grading {
+
+/// --jobs: at most this many renders at once.
+inline constexpr int kMaxJobs = 256;
+/// --timeout: at most this many seconds for one render (an hour).
+inline constexpr double kMaxTimeoutSeconds = 3600;
+/// A PNG read (a reference, or a render in a folder of images): at most 16 MiB.
+inline constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t{16} << 20;
+/// An image read or compared: at most this many pixels wide and high.
+inline constexpr int kMaxImageSide = 4096;
+/// A text file read (MANIFEST, <view>.txt, <view>.error, --text-out): at most 1 MiB.
+inline constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t{1} << 20;
+using gllab::kMaxRendererOutputBytes;
+
+/// Strict numbers (command-line options, MANIFEST values): the whole text is
+/// the number, in decimal (no spaces, no hex, no inf or nan), within [lo, hi];
+/// an integer has digits only (an optional '-'), so "3.5" and "1e2" are not
+/// integers. std::nullopt when the text is not such a number.
+std::optional<double> parse_number(const std::string& text, double lo, double hi);
+std::optional<long long> parse_integer(const std::string& text, long long lo, long long hi);
 
 /// Bad command line or unusable input (no references, no MANIFEST): exit 2.
 struct UsageError : std::runtime_error {
@@ -58,10 +93,22 @@ struct Manifest {
   Tolerance build, images;        // <profile>_channel_threshold, ..._max_shifted_share
   double text_relative = 0;       // text_relative_tolerance: |a - b| <= this * max(|a|, |b|)
   double text_absolute = 0;       // text_absolute_tolerance: and numbers this small are equal
+  int width = 0, height = 0;      // size: WIDTHxHEIGHT of every reference (0: not given)
   const Tolerance& tolerance(Profile p) const { return p == Profile::kBuild ? build : images; }
 };
-/// Throws UsageError naming the file and the missing or malformed key.
+/// Reads refs/MANIFEST (a regular file of at most kMaxTextFileBytes) with
+/// parse_manifest. Throws UsageError naming the file.
 Manifest read_manifest(const std::filesystem::path& refs);
+/// A MANIFEST's text; `name` names it in errors. Every line is empty, a
+/// # comment or "key: value", each key once. Required, with their ranges:
+/// <profile>_channel_threshold and _edge_contrast integers 0..255,
+/// _shift_radius an integer 0..kMaxShiftRadius, _max_unexcused_share and
+/// _max_shifted_share numbers 0..1, text_relative_tolerance and
+/// text_absolute_tolerance numbers 0..1; optional: size WIDTHxHEIGHT, each
+/// 1..kMaxImageSide. Throws UsageError with one line naming the field and its
+/// value: "reference_images/MANIFEST: build_max_shifted_share 'nan' is not a
+/// number from 0 to 1".
+Manifest parse_manifest(const std::string& text, const std::string& name);
 
 /// One view: reference_images/<lab>__<view>.png, or <lab>__<view>.error for
 /// an error view.
@@ -135,10 +182,15 @@ inline constexpr double kDefaultTimeoutSeconds = 60;
 /// A build of this repository: renders each view with <dir>/<lab>_headless
 /// (or <dir>/bin/<lab>_headless) --view V --out - (a raw frame, image/pam.h).
 /// env entries NAME=VALUE go to the renderer (e.g. GALLIUM_DRIVER=softpipe).
-/// A render that runs longer than timeout_seconds is killed and fails.
+/// A render that runs longer than timeout_seconds (0 < t <= kMaxTimeoutSeconds,
+/// else UsageError), or writes more than kMaxRendererOutputBytes to stdout or
+/// stderr, is killed and fails.
 std::unique_ptr<Source> build_source(const std::filesystem::path& dir, std::vector<std::string> env = {},
                                      double timeout_seconds = kDefaultTimeoutSeconds);
-/// A folder of PNGs named <lab>__<view>.png.
+/// A folder of PNGs named <lab>__<view>.png, each with its text <lab>__<view>.txt.
+/// A PNG or text that is not a regular file (a FIFO, a device), is larger than
+/// kMaxImageFileBytes or kMaxTextFileBytes or wider or higher than
+/// kMaxImageSide fails its view with the reason; nothing is waited on.
 std::unique_ptr<Source> image_source(const std::filesystem::path& dir);
 /// Is dir a build (has headless programs) rather than a folder of images?
 bool looks_like_build(const std::filesystem::path& dir);
@@ -161,8 +213,19 @@ struct Reference {
   std::optional<std::vector<std::string>> text;
   std::string error_line;  // an error view's expected first line of stderr
 };
-/// Reads refs/<view>.png (or .error) and refs/<view>.txt. Throws on a missing or bad file.
+/// Reads refs/<view>.png (or .error) and refs/<view>.txt: regular files within
+/// kMaxImageFileBytes and kMaxTextFileBytes, a PNG that decodes, an error line
+/// that is not empty. Throws UsageError naming the file and what is wrong.
 Reference read_reference(const std::filesystem::path& refs, const ViewId& id);
+
+/// Every view's reference, by ViewId::name().
+using References = std::map<std::string, Reference>;
+/// Reads and checks the references of all the views before any grading
+/// (read_reference), and their size: the MANIFEST's size when it gives one,
+/// else the size most of them have. Throws UsageError naming the first
+/// reference that is missing, unreadable, corrupt or of another size.
+References read_references(const std::filesystem::path& refs, const std::vector<ViewId>& views,
+                           const Manifest* manifest = nullptr);
 
 /// How a grade judges: the profile's tolerance and the text tolerance.
 struct Judgement {
@@ -197,11 +260,18 @@ struct ProgressEvent {
 };
 using Progress = std::function<void(const ProgressEvent&)>;
 
-/// Grades the views with `jobs` threads (>= 1), in the views' order in the
-/// result. References are read once, here. A lab's views are obtained as
-/// one batch; a view that fails from the batch is rendered again on its own
-/// and graded from that render, so a verdict never depends on which views
-/// a process drew before (references are rendered one view per process).
+/// Grades the views with up to `jobs` threads (clamped to 1..kMaxJobs and to
+/// the number of labs), in the views' order in the result. A thread that
+/// cannot start leaves the work to those that did (at least this one). A
+/// lab's views are obtained as one batch; a view that fails from the batch is
+/// rendered again on its own and graded from that render, so a verdict never
+/// depends on which views a process drew before (references are rendered one
+/// view per process). Every view must have its reference in `references`.
+/// Throws (after every thread has stopped) when the grading itself cannot go
+/// on, e.g. no temporary file for a renderer's text.
+Grade grade(const Source& source, const std::vector<ViewId>& views, const References& references,
+            const Judgement& judge, int jobs, bool keep_images, const Progress& progress = nullptr);
+/// The same, reading the references first (read_references).
 Grade grade(const Source& source, const std::vector<ViewId>& views, const std::filesystem::path& refs,
             const Judgement& judge, int jobs, bool keep_images, const Progress& progress = nullptr);
 

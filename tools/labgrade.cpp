@@ -6,12 +6,18 @@
 //   options: --labs 15,22  --views a,b  --jobs N  --report DIR  --out DIR  --refs DIR
 //            --env NAME=VALUE  --timeout SECONDS  --csv FILE  --profile build|images  --quiet
 //
-// Exit status: 0 every view passed, 1 some failed, 2 usage or input error.
-// The metric and its calibration: grading.h and README.md ("Grading").
+// Exit status: 0 every view passed, 1 some failed, 2 usage or input error
+// (among them a reference or MANIFEST that is unreadable or out of range,
+// checked before any grading, and a failed write, stdout included).
+// The metric and its calibration: grading.h and README.md ("Grading");
+// the limits: tools/README.md.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -23,6 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "files/files.h"
 #include "grading.h"
 #include "image/compare.h"
 #include "image/image.h"
@@ -37,10 +44,11 @@ struct Settings {
   enum class Mode { kNone, kBuild, kImages, kClass } mode = Mode::kNone;
   fs::path input, refs = GLLAB_REFERENCE_DIR, report, out = "out", csv;
   std::vector<std::string> labs, views, env;
-  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int jobs =
+      static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(kMaxJobs)));
   double timeout = kDefaultTimeoutSeconds;
   std::optional<Profile> profile;  // --profile; else build for a build, images for images
-  bool quiet = false;
+  bool quiet = false, help = false;
 };
 
 const char kUsage[] =
@@ -57,13 +65,13 @@ const char kUsage[] =
     "                     writes one CSV: a row per student, a column per lab\n"
     "  --labs 15,22       only these labs (number or folder name)\n"
     "  --views a,b        only these views\n"
-    "  --jobs N           renders at once (default: the number of cores)\n"
+    "  --jobs N           renders at once, 1 to 256 (default: the number of cores)\n"
     "  --report DIR       write DIR/index.html (reference, submission, heat map per\n"
     "                     view, failures first), DIR/results.json, DIR/results.csv\n"
     "  --out DIR          where failing renders and their heat maps go (default out/)\n"
     "  --refs DIR         the references (default: this repository's reference_images/)\n"
     "  --env NAME=VALUE   environment for the renderers, e.g. GALLIUM_DRIVER=softpipe\n"
-    "  --timeout SECONDS  a render running longer fails (default 60)\n"
+    "  --timeout SECONDS  a render running longer fails (default 60, at most 3600)\n"
     "  --csv FILE         --class: the CSV to write (default class.csv)\n"
     "  --profile NAME     the limits to judge by: build (the same renderer, tight)\n"
     "                     or images (another renderer); default: build for a build,\n"
@@ -71,11 +79,14 @@ const char kUsage[] =
     "  --quiet            no progress and no per-view table, only the summary\n\n"
     "Exit status: 0 all views passed, 1 some failed, 2 usage or input error.\n";
 
-std::vector<std::string> split(const std::string& text, char sep) {
+// The names of --labs or --views: "a,b"; an empty name ("", "a,,b") is an error.
+std::vector<std::string> names(const std::string& option, const std::string& text) {
   std::vector<std::string> parts;
   std::stringstream in(text);
-  for (std::string part; std::getline(in, part, sep);)
-    if (!part.empty()) parts.push_back(part);
+  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
+  if (text.empty() || text.back() == ',' ||
+      std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
+    throw UsageError(option + " '" + text + "' has an empty name (expected NAME,NAME,...)");
   return parts;
 }
 
@@ -95,8 +106,10 @@ Settings parse(int argc, char** argv) {
     if (a == "--build") mode(Settings::Mode::kBuild);
     else if (a == "--images") mode(Settings::Mode::kImages);
     else if (a == "--class") mode(Settings::Mode::kClass);
-    else if (a == "--labs") for (const std::string& l : split(value(), ',')) s.labs.push_back(l);
-    else if (a == "--views") for (const std::string& v : split(value(), ',')) s.views.push_back(v);
+    else if (a == "--labs")
+      for (const std::string& l : names(a, value())) s.labs.push_back(l);
+    else if (a == "--views")
+      for (const std::string& v : names(a, value())) s.views.push_back(v);
     else if (a == "--report") s.report = value();
     else if (a == "--out") s.out = value();
     else if (a == "--refs") s.refs = value();
@@ -110,18 +123,21 @@ Settings parse(int argc, char** argv) {
       s.env.push_back(e);
     } else if (a == "--jobs") {
       const std::string v = value();
-      if (v.empty() || v.size() > 4 || v.find_first_not_of("0123456789") != std::string::npos || std::stoi(v) < 1)
-        throw UsageError("--jobs '" + v + "' is not a whole number from 1 to 9999");
-      s.jobs = std::stoi(v);
+      const std::optional<long long> jobs = parse_integer(v, 1, kMaxJobs);
+      if (!jobs)
+        throw UsageError("--jobs '" + v + "' is not a whole number from 1 to " +
+                         std::to_string(kMaxJobs));
+      s.jobs = static_cast<int>(*jobs);
     } else if (a == "--timeout") {
       const std::string v = value();
-      char* end = nullptr;
-      s.timeout = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end || !(s.timeout > 0) || !std::isfinite(s.timeout))
-        throw UsageError("--timeout '" + v + "' is not a number of seconds > 0");
+      const std::optional<double> seconds = parse_number(v, 0, kMaxTimeoutSeconds);
+      if (!seconds || !(*seconds > 0))
+        throw UsageError("--timeout '" + v + "' is not a number of seconds > 0 and <= " +
+                         std::to_string(static_cast<int>(kMaxTimeoutSeconds)));
+      s.timeout = *seconds;
     } else if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
+      s.help = true;
+      return s;
     } else {
       throw UsageError("unknown option '" + a + "' (try --help)");
     }
@@ -230,31 +246,90 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
-void write_text(const fs::path& file, const std::string& text) {
+std::string reason(int error) { return error ? std::strerror(error) : "an earlier write failed"; }
+
+// Writes a file whole or not at all: into a temporary file beside it, renamed
+// over it when complete; the temporary file is removed on every failure.
+// Through a symlink, the file it names is replaced; a path that names no
+// regular file (/dev/stdout, /dev/null, a FIFO) is written in place, since a
+// rename would replace the device; a directory is an error.
+void write_text(const fs::path& path, const std::string& text) {
   std::error_code ec;
-  // --csv /dev/stdout: write into it; a rename would replace the device.
-  if (fs::exists(file, ec) && !fs::is_regular_file(file, ec) && !fs::is_directory(file, ec)) {
+  fs::path file = path;
+  if (fs::exists(path, ec)) {
+    const fs::path target = fs::canonical(path, ec);
+    if (!ec) file = target;
+  }
+  if (fs::is_directory(file, ec))
+    throw UsageError("cannot write " + path.string() + ": it is a directory");
+  if (fs::exists(file, ec) && !fs::is_regular_file(file, ec)) {
     std::ofstream out(file, std::ios::binary);
     out << text;
-    if (!out.flush()) throw UsageError("cannot write " + file.string());
+    out.close();
+    if (!out) throw UsageError("cannot write " + path.string() + " (" + reason(errno) + ")");
     return;
   }
-  const fs::path tmp = file.string() + ".tmp";
+  const fs::path tmp =
+      file.parent_path() / ("." + file.filename().string() + ".tmp-" + std::to_string(getpid()));
+  struct Remove {
+    const fs::path& tmp;
+    bool done = false;
+    ~Remove() {
+      std::error_code ignored;
+      if (!done) fs::remove(tmp, ignored);
+    }
+  } cleanup{tmp};
   {
-    std::ofstream out(tmp, std::ios::binary);
+    errno = 0;
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw UsageError("cannot write " + path.string() + " (" + reason(errno) + ")");
     out << text;
-    if (!out.flush()) throw UsageError("cannot write " + file.string());
+    out.close();  // a full disk may only show here
+    if (!out) throw UsageError("cannot write " + path.string() + " (" + reason(errno) + ")");
   }
-  fs::rename(tmp, file);
+  fs::rename(tmp, file, ec);
+  if (ec) throw UsageError("cannot write " + path.string() + " (" + ec.message() + ")");
+  cleanup.done = true;
+}
+
+// A folder to write into: made when missing; an error when something else is there.
+void make_folder(const std::string& option, const fs::path& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw UsageError(option + " " + dir.string() + " is not a folder");
+  fs::create_directories(dir, ec);
+  if (ec)
+    throw UsageError(option + " " + dir.string() + ": cannot make the folder (" + ec.message() +
+                     ")");
+}
+
+// Where the results go, checked before any grading: a target that cannot be
+// written must not cost a whole class's renders.
+void check_targets(const Settings& s) {
+  std::error_code ec;
+  const auto not_a_folder = [&](const char* option, const fs::path& dir) {
+    if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+      throw UsageError(std::string(option) + " " + dir.string() + " is not a folder");
+  };
+  not_a_folder("--out", s.out);
+  not_a_folder("--report", s.report);
+  if (s.mode == Settings::Mode::kClass) {
+    if (fs::is_directory(s.csv, ec))
+      throw UsageError("--csv " + s.csv.string() + " is a directory");
+    const fs::path parent = s.csv.parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+      throw UsageError("--csv " + s.csv.string() + ": no folder " + parent.string());
+  }
 }
 
 // Failing renders and their heat maps, for the student to look at.
-void write_failures(const Grade& g, const Settings& s, const Tolerance& t) {
+void write_failures(const Grade& g, const Settings& s, const Tolerance& t,
+                    const References& references) {
   bool any = false;
   for (const ViewResult& v : g.views) {
     if (v.passed || !v.submission) continue;
-    if (!any) fs::create_directories(s.out), any = true;
-    const gllab::Image reference = gllab::read_png((s.refs / (v.id.name() + ".png")).string());
+    if (!any) make_folder("--out", s.out), any = true;
+    const gllab::Image& reference = references.at(v.id.name()).image;
     gllab::write_png((s.out / (v.id.name() + ".png")).string(), *v.submission, 1);
     if (v.comparison)
       gllab::write_png((s.out / (v.id.name() + ".diff.png")).string(),
@@ -288,9 +363,11 @@ nlohmann::ordered_json view_json(const ViewResult& v) {
   return j;
 }
 
-void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, const Judgement& judge) {
+void write_report(const Grade& g, const fs::path& dir, const fs::path& refs,
+                  const References& references, const Judgement& judge) {
   const Tolerance& t = judge.tolerance;
-  for (const char* sub : {"reference", "submission", "heat_map"}) fs::create_directories(dir / sub);
+  for (const char* sub : {"reference", "submission", "heat_map"})
+    make_folder("--report", dir / sub);
   // Failures first, then by name.
   std::vector<const ViewResult*> rows;
   for (const ViewResult& v : g.views) rows.push_back(&v);
@@ -330,8 +407,8 @@ void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, con
     if (has_render) gllab::write_png((dir / "submission" / name).string(), *v->submission, 1);
     if (has_render && v->comparison)
       gllab::write_png((dir / "heat_map" / name).string(),
-                       gllab::heat_map(gllab::read_png((refs / name).string()), *v->submission, t.channel_threshold,
-                                       t.shift_radius, t.edge_contrast),
+                       gllab::heat_map(references.at(v->id.name()).image, *v->submission,
+                                       t.channel_threshold, t.shift_radius, t.edge_contrast),
                        1);
     const auto cell = [&](bool present, const std::string& folder, const std::string& missing) {
       return present ? "<td><a href=\"" + folder + "/" + name + "\"><img src=\"" + folder + "/" + name + "\" alt=\"" +
@@ -365,10 +442,12 @@ void write_report(const Grade& g, const fs::path& dir, const fs::path& refs, con
 
 // ---- modes ---------------------------------------------------------------------------
 
-Grade grade_one(const Source& source, const std::vector<ViewId>& views, const Settings& s, const Judgement& j,
+Grade grade_one(const Source& source, const std::vector<ViewId>& views,
+                const References& references, const Settings& s, const Judgement& j,
                 bool keep_images) {
   Console console(s.quiet);
-  return grade(source, views, s.refs, j, s.jobs, keep_images, [&](const ProgressEvent& e) { console(e); });
+  return grade(source, views, references, j, s.jobs, keep_images,
+               [&](const ProgressEvent& e) { console(e); });
 }
 
 // A folder of images cannot show how a program exits: its error views are
@@ -389,20 +468,22 @@ Judgement judgement_for(const Settings& s, const Manifest& m, bool build) {
   return judgement(m, s.profile ? *s.profile : build ? Profile::kBuild : Profile::kImages);
 }
 
-int run_single(const Settings& s, const std::vector<ViewId>& all, const Manifest& m) {
+int run_single(const Settings& s, const std::vector<ViewId>& all, const Manifest& m,
+               const References& references) {
   const bool build = s.mode == Settings::Mode::kBuild;
   const std::vector<ViewId> views = gradable(all, build, s.quiet);
   const Judgement j = judgement_for(s, m, build);
   const std::unique_ptr<Source> source = build ? build_source(s.input, s.env, s.timeout) : image_source(s.input);
-  const Grade g = grade_one(*source, views, s, j, !s.report.empty());
+  const Grade g = grade_one(*source, views, references, s, j, !s.report.empty());
   if (!s.quiet) print_table(g);
   print_summary(g, j);
-  write_failures(g, s, j.tolerance);
-  if (!s.report.empty()) write_report(g, s.report, s.refs, j);
+  write_failures(g, s, j.tolerance, references);
+  if (!s.report.empty()) write_report(g, s.report, s.refs, references, j);
   return g.passed() == static_cast<int>(g.views.size()) ? 0 : 1;
 }
 
-int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest& m) {
+int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest& m,
+              const References& references) {
   if (!fs::is_directory(s.input)) throw UsageError("no class folder " + s.input.string());
   std::vector<fs::path> students;
   for (const auto& entry : fs::directory_iterator(s.input))
@@ -421,7 +502,7 @@ int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest&
     const std::vector<ViewId> views = gradable(all, build, true);
     const Judgement j = judgement_for(s, m, build);
     const std::unique_ptr<Source> source = build ? build_source(student, s.env, s.timeout) : image_source(student);
-    const Grade g = grade_one(*source, views, s, j, !s.report.empty());
+    const Grade g = grade_one(*source, views, references, s, j, !s.report.empty());
     all_passed = all_passed && g.passed() == static_cast<int>(g.views.size());
     std::printf("%-24s %-6s %3d/%zu views  score %5.1f%%  (%s)\n", student.filename().c_str(), build ? "build" : "images",
                 g.passed(), g.views.size(), g.score(), lab_summary(g).c_str());
@@ -436,7 +517,7 @@ int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest&
       csv += std::string(",") + (it != by_lab.end() ? score : "-");
     }
     csv += "\n";
-    if (!s.report.empty()) write_report(g, s.report / student.filename(), s.refs, j);
+    if (!s.report.empty()) write_report(g, s.report / student.filename(), s.refs, references, j);
   }
   write_text(s.csv, csv);
   std::printf("%zu submissions; one row each, one column per lab (percent of its views passed): %s\n",
@@ -449,13 +530,23 @@ int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest&
 int main(int argc, char** argv) {
   try {
     const Settings s = parse(argc, argv);
+    if (s.help) {
+      std::fputs(kUsage, stdout);
+      gllab::files::finish_stdout();
+      return 0;
+    }
+    // The instructor's files and the targets first: a fault there is not the student's.
     const Manifest manifest = read_manifest(s.refs);
     const std::vector<ViewId> views = select_views(reference_views(s.refs), s.labs, s.views);
-    return s.mode == Settings::Mode::kClass ? run_class(s, views, manifest) : run_single(s, views, manifest);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "labgrade: %s\n", e.what());
-    return 2;
+    const References references = read_references(s.refs, views, &manifest);
+    check_targets(s);
+    const int status = s.mode == Settings::Mode::kClass
+                           ? run_class(s, views, manifest, references)
+                           : run_single(s, views, manifest, references);
+    gllab::files::finish_stdout();
+    return status;
   } catch (const std::exception& e) {
+    std::fflush(stdout);
     std::fprintf(stderr, "labgrade: %s\n", e.what());
     return 2;
   }

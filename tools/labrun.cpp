@@ -10,10 +10,14 @@
 // "name expect_error") has no reference image: --update-references skips it
 // and --check-references expects none.
 //
-// Exit status: 0 done / all present, 1 a reference missing or stray, 2 usage or input error.
+// Exit status: 0 done / all present, 1 a reference missing or stray, 2 usage or input error
+// (a failed write, stdout included). Limits: tools/README.md.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -22,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "files/files.h"
 #include "process.h"
 
 namespace fs = std::filesystem;
@@ -52,13 +57,16 @@ constexpr ProfileLimits kProfiles[] = {
 // the absolute bound (rounding noise such as 3e-17) agree whatever they are.
 constexpr double kTextRelative = 1e-6;
 constexpr double kTextAbsolute = 1e-9;
+// A renderer's --text-out read back: at most 1 MiB (the largest view's text is
+// 1.9 KB; labgrade's kMaxTextFileBytes).
+constexpr std::uintmax_t kMaxTextBytes = std::uintmax_t{1} << 20;
 
 struct Settings {
   std::vector<std::string> labs;  // empty: all
   std::set<std::string> views;    // empty: all
   fs::path bin, refs;
   std::vector<std::string> env;
-  bool update = false, check = false;
+  bool update = false, check = false, help = false;
 };
 
 struct UsageError : std::runtime_error {
@@ -71,6 +79,31 @@ std::vector<std::string> split(const std::string& text, char sep) {
   for (std::string part; std::getline(in, part, sep);)
     if (!part.empty()) parts.push_back(part);
   return parts;
+}
+
+// The names of --labs or --views: "a,b"; an empty name ("", "a,,b") is an
+// error, not "all" (an empty --labs must not rewrite every reference).
+std::vector<std::string> names(const std::string& option, const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
+  if (text.empty() || text.back() == ',' ||
+      std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
+    throw UsageError(option + " '" + text + "' has an empty name (expected NAME,NAME,...)");
+  return parts;
+}
+
+// A renderer run with the grader's output limit (process.h): a program that
+// prints without end is killed, not buffered until memory runs out.
+gllab::ProcessResult run_renderer(const std::vector<std::string>& argv,
+                                  const std::vector<std::string>& env = {}) {
+  gllab::ProcessResult r =
+      gllab::run_process(argv, env, gllab::ProcessLimits{0, gllab::kMaxRendererOutputBytes});
+  if (r.output_exceeded)
+    throw std::runtime_error(argv[0] + ": wrote more than " +
+                             std::to_string(gllab::kMaxRendererOutputBytes >> 20) +
+                             " MiB to stdout or stderr (killed)");
+  return r;
 }
 
 const std::vector<std::string>& all_labs() {
@@ -104,9 +137,9 @@ Settings parse(int argc, char** argv) {
       return argv[++i];
     };
     if (a == "--labs") {
-      for (const std::string& l : split(value(), ',')) s.labs.push_back(resolve_lab(l));
+      for (const std::string& l : names(a, value())) s.labs.push_back(resolve_lab(l));
     } else if (a == "--views") {
-      for (const std::string& v : split(value(), ',')) s.views.insert(v);
+      for (const std::string& v : names(a, value())) s.views.insert(v);
     } else if (a == "--bin") s.bin = value();
     else if (a == "--refs") s.refs = value();
     else if (a == "--env") {
@@ -117,6 +150,7 @@ Settings parse(int argc, char** argv) {
     } else if (a == "--update-references") s.update = true;
     else if (a == "--check-references") s.check = true;
     else if (a == "--help" || a == "-h") {
+      s.help = true;
       std::puts(
           "usage: labrun --update-references [--labs 01,15] [--views NAME,...] [--refs DIR]\n"
           "              [--env NAME=VALUE]...\n"
@@ -127,7 +161,7 @@ Settings parse(int argc, char** argv) {
           "  --env NAME=VALUE     set for the renderer\n\n"
           "To grade renders against the references: labgrade (./lab run, ./lab grade).\n"
           "Exit status: 0 done, 1 a reference missing or stray, 2 usage or input error.");
-      std::exit(0);
+      return s;
     } else throw UsageError("unknown option '" + a + "' (try --help)");
   }
   if (!s.update && !s.check) throw UsageError("give --update-references or --check-references (try --help)");
@@ -146,7 +180,7 @@ struct ViewEntry {
 };
 
 std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
-  const gllab::ProcessResult r = gllab::run_process({renderer_of(s, lab).string(), "--list-views"});
+  const gllab::ProcessResult r = run_renderer({renderer_of(s, lab).string(), "--list-views"});
   if (!r.started || r.exit_status != 0)
     throw UsageError(lab + ": cannot list views: " + gllab::first_line(r.err));
   std::vector<ViewEntry> views;
@@ -165,14 +199,27 @@ std::vector<ViewEntry> views_of(const Settings& s, const std::string& lab) {
   return views;
 }
 
+// Whole or not at all: a temporary file beside it, renamed over it when
+// complete and removed on every failure.
 void write_file(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
+  std::error_code ec;
+  if (fs::is_directory(file, ec))
+    throw UsageError("cannot write " + file.string() + ": it is a directory");
+  const fs::path tmp =
+      file.parent_path() / ("." + file.filename().string() + ".tmp-" + std::to_string(getpid()));
+  const auto fail = [&](const std::string& why) {
+    fs::remove(tmp, ec);
+    return UsageError("cannot write " + file.string() + " (" + why + ")");
+  };
   {
-    std::ofstream out(tmp, std::ios::binary);
+    errno = 0;
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
-    if (!out.flush()) throw UsageError("cannot write " + file.string());
+    out.close();
+    if (!out) throw fail(errno ? std::strerror(errno) : "write failed");
   }
-  fs::rename(tmp, file);
+  fs::rename(tmp, file, ec);
+  if (ec) throw fail(ec.message());
 }
 
 std::string reference_name(const std::string& lab, const std::string& view) {
@@ -226,7 +273,8 @@ int update_references(const Settings& s) {
   int count = 0;
   for (const std::string& lab : s.labs) {
     if (renderer_info.empty()) {
-      const gllab::ProcessResult info = gllab::run_process({renderer_of(s, lab).string(), "--info"}, s.env);
+      const gllab::ProcessResult info =
+          run_renderer({renderer_of(s, lab).string(), "--info"}, s.env);
       if (info.exit_status != 0) throw UsageError(lab + ": --info failed: " + gllab::first_line(info.err));
       renderer_info = info.out;
     }
@@ -235,7 +283,7 @@ int update_references(const Settings& s) {
       if (entry.expect_error) {
         // Its reference is the one line it must refuse with.
         const gllab::ProcessResult r =
-            gllab::run_process({renderer_of(s, lab).string(), "--view", view, "--out", "-"}, s.env);
+            run_renderer({renderer_of(s, lab).string(), "--view", view, "--out", "-"}, s.env);
         if (r.exit_status != 1 || !r.out.empty())
           throw UsageError(lab + " " + view + ": an error view must exit 1 and draw nothing (exit " +
                            std::to_string(r.exit_status) + ")");
@@ -246,22 +294,22 @@ int update_references(const Settings& s) {
       }
       const fs::path target = s.refs / reference_name(lab, view);
       const fs::path text = s.refs / (lab + "__" + view + ".txt");
-      const gllab::ProcessResult r = gllab::run_process(
-          {renderer_of(s, lab).string(), "--view", view, "--out", target.string(), "--text-out", text.string()},
-          s.env);
+      const gllab::ProcessResult r =
+          run_renderer({renderer_of(s, lab).string(), "--view", view, "--out", target.string(),
+                        "--text-out", text.string()},
+                       s.env);
       if (r.exit_status != 0) throw UsageError(lab + " " + view + ": " + gllab::first_line(r.err));
       // --text-out's one section, "== VIEW N", becomes the N lines alone.
-      std::ifstream in(text, std::ios::binary);
+      std::istringstream in(gllab::files::read_input(text.string(), kMaxTextBytes));
       std::string header, body;
       std::getline(in, header);
       for (std::string line; std::getline(in, line);) body += line + "\n";
-      in.close();
       write_file(text, body);
       std::printf("wrote %s and .txt\n", target.c_str());
       ++count;
     }
   }
-  std::ofstream m(s.refs / "MANIFEST");
+  std::ostringstream m;
   m << "# reference_images/MANIFEST: how the reference images were made.\n"
     << "# Regenerate all of them with: make references\n"
     << "# Two profiles: build (labgrade --build: a student's build on this renderer)\n"
@@ -287,7 +335,7 @@ int update_references(const Settings& s) {
       << p.name << "_max_shifted_share: " << p.max_shifted_share << "\n";
   m << "text_relative_tolerance: " << kTextRelative << "\n"
     << "text_absolute_tolerance: " << kTextAbsolute << "\n";
-  if (!m) throw UsageError("cannot write " + (s.refs / "MANIFEST").string());
+  write_file(s.refs / "MANIFEST", m.str());
   std::printf("%d reference images and MANIFEST written to %s\n", count, s.refs.c_str());
   return 0;
 }
@@ -297,9 +345,11 @@ int update_references(const Settings& s) {
 int main(int argc, char** argv) {
   try {
     const Settings s = parse(argc, argv);
-    if (s.update) return update_references(s);
-    return check_references(s);
+    const int status = s.help ? 0 : s.update ? update_references(s) : check_references(s);
+    gllab::files::finish_stdout();
+    return status;
   } catch (const std::exception& e) {
+    std::fflush(stdout);
     std::fprintf(stderr, "labrun: %s\n", e.what());
     return 2;
   }

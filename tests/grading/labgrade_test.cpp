@@ -12,7 +12,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "image/image.h"
 #include "test_support.h"
 
 namespace {
@@ -78,24 +77,18 @@ TEST(Labgrade, EveryViewOfThisBuildPassesItsReference) {
   EXPECT_NE(r.out.find("4 views: 4 passed, 0 failed; score 100.0%"), std::string::npos) << r.out;
 }
 
-TEST(Labgrade, BrokenReferencesFailTheirRowsWithTheReason) {
-  ScratchDir refs("refs"), out("out");
-  copy_references(refs.path(), {"invalid_polygons"});
-  // default: not a PNG; wireframe: a valid PNG of the wrong size.
-  std::ofstream(refs / (kLab + "__default.png")) << "this is not a PNG\n";
-  gllab::write_png((refs / (kLab + "__wireframe.png")).string(), gllab::Image(16, 16));
+// A broken reference is the instructor's error, refused before grading
+// (labgrade_limits_test.cpp); here the references are sound and define the views.
+TEST(Labgrade, TheReferencesDefineTheViewsThatAreGraded) {
+  ScratchDir refs("refs");
+  copy_references(refs.path(), {"default", "invalid_polygons", "wireframe"});
   const gllab::ProcessResult r =
-      grade({"--build", kBinDir.string(), "--refs", refs.path().string(), "--out", out.path().string()});
-  EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
-  EXPECT_NE(row_of(r.out, "default").find("cannot read the reference: read_png"), std::string::npos) << r.out;
-  EXPECT_NE(row_of(r.out, "wireframe").find("render is 512x512, the reference 16x16"), std::string::npos) << r.out;
-  EXPECT_NE(row_of(r.out, "invalid_polygons").find("pass"), std::string::npos) << r.out;
-  // The views are the references' views: vertex_order has none, so it is not graded.
+      grade({"--build", kBinDir.string(), "--refs", refs.path().string()});
+  EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
+  // vertex_order has no reference, so it is not graded.
   EXPECT_EQ(row_of(r.out, "vertex_order"), "") << r.out;
-  EXPECT_NE(r.out.find("3 views: 1 passed, 2 failed"), std::string::npos) << r.out;
-  // The failing render is kept for a look (written only for failures).
-  EXPECT_TRUE(fs::exists(out / (kLab + "__wireframe.png")));
-  EXPECT_FALSE(fs::exists(out / (kLab + "__invalid_polygons.png")));
+  EXPECT_NE(row_of(r.out, "wireframe").find("pass"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("3 views: 3 passed, 0 failed"), std::string::npos) << r.out;
 }
 
 TEST(Labgrade, MissingManifestIsAUsageErrorOfOneLine) {
