@@ -10,6 +10,8 @@
 // function, which returns false, and read_png/write_png throw a normal exception.
 #include "image/image.h"
 
+#include "files/files.h"
+
 #include <png.h>
 #include <unistd.h>  // getpid
 
@@ -25,7 +27,6 @@ namespace gllab {
 namespace {
 
 constexpr std::size_t kMessageSize = 256;      // room for one libpng message
-constexpr std::size_t kReadChunk = 64 * 1024;  // bytes per fread while loading a file
 constexpr int kChannels = 4;                   // R, G, B, A
 // Refuse more than 2^28 pixels (1 GiB of RGBA). A corrupt header may claim up to
 // libpng's own limit of 1,000,000 x 1,000,000, and we would try to allocate 4 TB.
@@ -131,32 +132,19 @@ bool decode_rows(PngDecoder* d, png_bytepp rows) {
   return true;
 }
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 // The whole file, so that libpng decodes from memory and a truncated file is
 // simply one that runs out of bytes.
 std::vector<std::uint8_t> read_file(const std::string& path, const std::string& where) {
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-  if (!file) {
-    const int err = errno;
-    if (err == ENOENT) throw ImageError(where + "no such file");
-    throw ImageError(where + "cannot open: " + std::strerror(err));
+  // A regular file of at most files::kMaxInputBytes (a FIFO would block, /dev/zero never ends).
+  try {
+    const std::string bytes = files::read_input(path);
+    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+  } catch (const files::FileError& e) {
+    const std::string what = e.what(), prefix = path + ": ";
+    const std::string reason = what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
+    if (reason == "cannot open (No such file or directory)") throw ImageError(where + "no such file");
+    throw ImageError(where + reason);
   }
-  std::vector<std::uint8_t> bytes;
-  for (;;) {
-    const std::size_t old_size = bytes.size();
-    bytes.resize(old_size + kReadChunk);
-    const std::size_t got = std::fread(bytes.data() + old_size, 1, kReadChunk, file.get());
-    bytes.resize(old_size + got);
-    if (got < kReadChunk) break;  // end of file or an error, told apart below
-  }
-  if (std::ferror(file.get())) {
-    const int err = errno;  // e.g. EISDIR when the path is a directory
-    throw ImageError(where + "cannot read: " + std::strerror(err));
-  }
-  return bytes;
 }
 
 // --- Writing ---------------------------------------------------------------

@@ -52,6 +52,8 @@ Image image_from_bottom_up(const std::uint8_t* rgba, int width, int height);
 ///   "read_png: 'x.png': no such file"
 ///   "read_png: 'x.png': not a PNG file"
 ///   "read_png: 'x.png': corrupt PNG (libpng: <libpng's message>)"
+///   "read_png: 'x.png': is a FIFO, not a regular file" (only regular files
+///   of at most files::kMaxInputBytes are read: files/files.h)
 Image read_png(const std::string& path);
 
 /// The same for a PNG already in memory (`size` bytes at `data`: a picture

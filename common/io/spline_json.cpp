@@ -3,6 +3,8 @@
 // mistake is reported at its JSON path ("knots[5]: ..."); whatever is left
 // is the core's to judge (spline::validate, trim validation).
 #include "io/spline_json.h"
+
+#include "files/files.h"
 #include "io/json_checks.h"
 
 #include <unistd.h>
@@ -357,12 +359,18 @@ class Checker : public detail::JsonChecker {
 /// (JSON allows it; the last one would silently win).
 class DuplicateKeyFinder {
  public:
+  /// Thrown at the opening bracket of a value nested deeper than kMaxJsonDepth.
+  struct TooDeep {
+    std::string path;
+  };
+
   bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
     using E = Json::parse_event_t;
     switch (event) {
       case E::object_start:
       case E::array_start:
         start_child();
+        if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) throw TooDeep{path(false)};
         frames_.emplace_back();
         frames_.back().is_array = event == E::array_start;
         break;
@@ -417,6 +425,10 @@ class DuplicateKeyFinder {
 };
 
 Json parse_json(const std::string& text, const std::string& source) {
+  if (text.size() > kMaxJsonBytes)
+    throw FileError(source, "",
+                    std::to_string(text.size()) + " bytes, larger than the limit of " +
+                        std::to_string(kMaxJsonBytes) + " (kMaxJsonBytes)");
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw FileError(source, "", "empty file (expected a JSON object)");
   // nlohmann reads a NUL byte as the end of the input: say what it is.
@@ -448,6 +460,10 @@ Json parse_json(const std::string& text, const std::string& source) {
     throw FileError(source, finder.current_path(), std::string("not valid JSON: ") + e.what());
   } catch (const Json::exception& e) {
     throw FileError(source, finder.current_path(), std::string("not valid JSON: ") + e.what());
+  } catch (const DuplicateKeyFinder::TooDeep& e) {
+    throw FileError(source, e.path,
+                    "nested more than " + std::to_string(kMaxJsonDepth) +
+                        " arrays or objects deep (the limit, kMaxJsonDepth)");
   }
   if (!finder.duplicate().empty())
     throw FileError(source, finder.duplicate(), "key appears twice in one object (each key once)");
@@ -455,14 +471,13 @@ Json parse_json(const std::string& text, const std::string& source) {
 }
 
 std::string read_text(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw FileError(file.string(), "", "is a directory, not a file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw FileError(file.string(), "", std::string("cannot open (") + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw FileError(file.string(), "", std::string("cannot read (") + std::strerror(errno) + ")");
-  return text.str();
+  try {
+    return files::read_input(file.string(), kMaxJsonBytes);
+  } catch (const files::FileError& e) {
+    // "path: is a FIFO, not a regular file": the file's name, then the problem.
+    const std::string what = e.what(), prefix = file.string() + ": ";
+    throw FileError(file.string(), "", what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+  }
 }
 
 [[noreturn]] void wrong_type(const std::string& source, const SplineFile& got, const std::string& wanted) {

@@ -16,6 +16,7 @@
 // replaces the file atomically (temporary file + rename).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -77,12 +78,29 @@ PointsFile parse_points(const std::string& text, const std::string& source = "<s
 /// on that knot vector the B-splines are the Bernstein polynomials).
 spline::BsplineCurve as_bspline(const spline::BezierCurve& bezier);
 
+// --- limits (common/io/README.md lists them) -----------------------------------
+
+/// The deepest nesting of arrays and objects a JSON file may have. A spline
+/// file nests 4 levels (the file, "points", a row of a surface, a point); a
+/// CSG tree up to two per node ({"op": ..., "children": [...]}), so its own
+/// limit of kCsgMaxDepth = 64 nodes (csg_json.h) needs about 130; the deepest
+/// example (examples/csg/classic.json) has 10. Checked while parsing, at the
+/// opening bracket, so nothing deeper is ever built (nor copied, nor freed by
+/// recursion).
+inline constexpr int kMaxJsonDepth = 256;
+/// The largest JSON file read: 8 MiB (the examples are under 2 KB; a file at
+/// the limit holds about a million numbers and parses in well under a second).
+inline constexpr std::uintmax_t kMaxJsonBytes = std::uintmax_t{8} << 20;
+
 /// The JSON text of a file, parsed with this format's rules: an empty file, a
 /// NUL byte, a syntax error (line and column), a number that overflows to
-/// inf and a key given twice in one object are FileErrors naming source.
-/// Other JSON formats of common/io (field_json.h) share it.
+/// inf, a key given twice in one object, nesting deeper than kMaxJsonDepth
+/// and text longer than kMaxJsonBytes are FileErrors naming source.
+/// Other JSON formats of common/io (field_json.h, csg_json.h) share it.
 Json parse_json_text(const std::string& text, const std::string& source);
-/// A file's bytes; FileError naming it when it is a directory or unreadable.
+/// A file's bytes: FileError naming it when it is not a regular file (a
+/// directory, a FIFO, a device: files/files.h), is larger than kMaxJsonBytes,
+/// or cannot be read.
 std::string read_text_file(const std::filesystem::path& file);
 
 /// Checks an already parsed JSON value as a spline file (same checks and

@@ -3,6 +3,8 @@
 // hold, and turns biff's error stack into one line.
 #include "io/volume_nrrd.h"
 
+#include "files/files.h"
+
 #include <teem/nrrd.h>
 #include <unistd.h>
 
@@ -167,9 +169,10 @@ void write_wrapped(const field::Grid3& g, const std::string& path, void* data, i
 
 field::Grid3 read_nrrd(const std::string& path) {
   {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-      throw FileError(path, "", "is a directory, not a file");
+    // A regular file only (a FIFO would block Teem's reader, /dev/zero never
+    // ends); opened without blocking to find out (files/files.h).
+    const std::string reason = files::not_regular_reason(path);
+    if (!reason.empty()) throw FileError(path, "", reason);
     std::ifstream probe(path, std::ios::binary);
     if (!probe)
       throw FileError(path, "", std::string("cannot open (") + std::strerror(errno) + ")");

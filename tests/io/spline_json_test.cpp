@@ -113,15 +113,70 @@ TEST(BadSplineFile, DuplicateKeyInsideATrimPieceNamesItsPath) {
 }
 
 TEST(BadSplineFile, DeeplyNestedArraysAreRejectedQuickly) {
-  // 100000 levels: paths are built only when a message needs one, not at
-  // every level (which would be quadratic in the depth).
+  // 100000 levels: the parser stops at the opening bracket of level
+  // kMaxJsonDepth + 1, so nothing deep is built, copied or freed.
+  const std::string depth = std::to_string(kMaxJsonDepth);
   const std::string text = std::string(100000, '[') + std::string(100000, ']');
-  EXPECT_THROW(parse_any(text), FileError);
+  try {
+    parse_any(text, "deep.json");
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.problem(), "nested more than " + depth + " arrays or objects deep (the limit, kMaxJsonDepth)");
+    std::string path;
+    for (int i = 0; i < kMaxJsonDepth; ++i) path += "[0]";  // where level kMaxJsonDepth + 1 starts
+    EXPECT_EQ(e.json_path(), path);
+  }
   try {
     parse_any(std::string(100000, '[') + "1e999" + std::string(100000, ']'));
     FAIL();
   } catch (const FileError& e) {
     EXPECT_EQ(e.json_path().substr(0, 9), "[0][0][0]");
+  }
+}
+
+// The crash class of issue 20: a deep value followed by another key made the
+// ordered map copy the deep value recursively (a stack overflow from about
+// 100k levels). Now the depth limit stops it before it is built.
+TEST(BadSplineFile, DeepValueFollowedByAnotherKeyIsAnErrorNotACrash) {
+  const std::string deep = std::string(200000, '[') + std::string(200000, ']');
+  const std::string text = R"({"type": "bezier_curve", "extra": )" + deep + R"(, "points": [[0, 0], [1, 1]]})";
+  try {
+    parse_any(text, "deep.json");
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("nested more than"), std::string::npos) << e.what();
+    EXPECT_EQ(e.json_path().rfind("extra[0][0]", 0), 0u) << e.json_path();
+  }
+}
+
+// Exactly kMaxJsonDepth levels parse (and are then judged as a spline file);
+// one more is the depth error.
+TEST(BadSplineFile, TheDepthLimitIsExact) {
+  const auto nested = [](int levels) {
+    return R"({"type": "bezier_curve", "points": [[0, 0], [1, 1]], "x": )" + std::string(levels - 1, '[') +
+           std::string(levels - 1, ']') + "}";
+  };
+  const auto problem = [](const std::string& text) {
+    try {
+      parse_any(text);
+    } catch (const FileError& e) {
+      return e.problem();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(problem(nested(kMaxJsonDepth)).find("nested more than"), std::string::npos);
+  EXPECT_NE(problem(nested(kMaxJsonDepth + 1)).find("nested more than"), std::string::npos);
+}
+
+// A text larger than kMaxJsonBytes is refused before it is parsed.
+TEST(BadSplineFile, TooLargeTextIsRefusedBeforeParsing) {
+  const std::string text(kMaxJsonBytes + 1, '[');
+  try {
+    parse_any(text, "big.json");
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.problem(), std::to_string(kMaxJsonBytes + 1) + " bytes, larger than the limit of " +
+                               std::to_string(kMaxJsonBytes) + " (kMaxJsonBytes)");
   }
 }
 

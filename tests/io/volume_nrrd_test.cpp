@@ -260,7 +260,7 @@ TEST(NrrdRead, MissingFileAndDirectory) {
     read_nrrd(dir.path().string());
     FAIL();
   } catch (const FileError& e) {
-    EXPECT_EQ(std::string(e.what()), dir.path().string() + ": is a directory, not a file");
+    EXPECT_EQ(std::string(e.what()), dir.path().string() + ": is a directory, not a regular file");
   }
 }
 
