@@ -21,18 +21,17 @@ constexpr int kMaxDepth = 50;  // a panel 2^-50 of its span: far below any usefu
 
 ArcLength::ArcLength(const BsplineCurve& curve, double tolerance)
     : curve_(curve), rule_(gauss_legendre(kArcLengthGaussPoints)) {
-  validate(curve_);
   require_finite(tolerance, "arc length", "tolerance");
   if (tolerance < 1e-15 || tolerance > 0.1)
     fail(tolerance > 0 ? ErrorCode::kOutOfRange : ErrorCode::kToleranceNotPositive,
          "arc length: tolerance=" + num(tolerance) + " must lie in [1e-15, 0.1] (relative)",
          {{"tolerance", tolerance}});
-  const ParamInterval dom = domain(curve_);
+  const ParamInterval dom = curve_.domain();
   breaks_ = {dom.a};
   cumulative_ = {0.0};
   // Cut at every distinct knot inside the domain: X' may have a kink there.
   double a = dom.a;
-  for (double knot : curve_.U) {
+  for (double knot : curve_.curve().U) {
     if (knot <= a || knot >= dom.b) continue;
     add_span(a, knot, tolerance, 0);
     a = knot;
@@ -40,7 +39,7 @@ ArcLength::ArcLength(const BsplineCurve& curve, double tolerance)
   add_span(a, dom.b, tolerance, 0);
 }
 
-double ArcLength::speed(double u) const { return norm(curve_derivs(curve_, u, 1)[1]); }
+double ArcLength::speed(double u) const { return norm(curve_.derivs(u, 1)[1]); }
 
 // The Gauss rule on [a, b]: the nodes map from [-1, 1] by u = m + h x.
 double ArcLength::panel_integral(double a, double b) const {

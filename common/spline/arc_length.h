@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "spline/bspline.h"
 #include "spline/quadrature.h"
 #include "spline/types.h"
 
@@ -62,7 +63,7 @@ class ArcLength {
   double panel_integral(double a, double b) const;
   void add_span(double a, double b, double tolerance, int depth);
 
-  BsplineCurve curve_;
+  CurveEvaluator curve_;  // checked once
   GaussRule rule_;
   std::vector<double> breaks_;
   std::vector<double> cumulative_;  // s at each break

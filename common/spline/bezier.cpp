@@ -34,8 +34,17 @@ double falling_factorial(int n, int k) {
 
 std::string interval_text(double a, double b) { return "[a, b] = [" + num(a) + ", " + num(b) + "]"; }
 
+void check_bezier_degree(long long n, const std::string& what) {
+  if (n > kMaxBezierDegree)
+    fail(ErrorCode::kDegreeTooHigh,
+         what + ": degree n=" + std::to_string(n) + " is above the limit of " + std::to_string(kMaxBezierDegree) +
+             " (kMaxBezierDegree)",
+         {{"n", static_cast<double>(n)}});
+}
+
 void validate_as(const BezierCurve& curve, const std::string& what) {
   if (curve.P.empty()) fail(ErrorCode::kEmptyInput, what + ": no control points (P is empty)", {{"points", 0}});
+  check_bezier_degree(static_cast<long long>(curve.P.size()) - 1, what);
   require_finite(curve.a, what, "a");
   require_finite(curve.b, what, "b");
   if (!(curve.a < curve.b))
@@ -123,6 +132,7 @@ void validate(const BezierCurve& curve) { validate_as(curve, "Bezier curve"); }
 double bernstein(int i, int n, double t, double a, double b) {
   const std::string what = "bernstein";
   if (n < 0) fail(ErrorCode::kDegreeTooLow, what + ": degree n=" + std::to_string(n) + " is negative", {{"n", n}});
+  check_bezier_degree(n, what);
   validate_interval(a, b, what);
   const double s = local_parameter(checked_parameter(t, a, b, what), a, b);
   if (i < 0 || i > n) return 0;
@@ -139,6 +149,7 @@ double bernstein(int i, int n, double t, double a, double b) {
 std::vector<double> bernstein_all(int n, double t, double a, double b) {
   const std::string what = "bernstein_all";
   if (n < 0) fail(ErrorCode::kDegreeTooLow, what + ": degree n=" + std::to_string(n) + " is negative", {{"n", n}});
+  check_bezier_degree(n, what);
   validate_interval(a, b, what);
   const double s = local_parameter(checked_parameter(t, a, b, what), a, b);
   // A1.3 AllBernstein (The NURBS Book, p. 21): degree j from degree j - 1,
@@ -178,6 +189,7 @@ Vec3 bezier_point(const BezierCurve& curve, double t) {
 std::vector<std::vector<double>> bezier_matrix(int n) {
   if (n < 0)
     fail(ErrorCode::kDegreeTooLow, "bezier_matrix: degree n=" + std::to_string(n) + " is negative", {{"n", n}});
+  check_bezier_degree(n, "bezier_matrix");
   const std::size_t size = static_cast<std::size_t>(n) + 1;
   std::vector<std::vector<double>> M(size, std::vector<double>(size, 0.0));
   for (int j = 0; j <= n; ++j) {  // power s^j sits in row n - j (the lecture's layout)
@@ -295,6 +307,7 @@ BezierCurve degree_elevate(const BezierCurve& curve, int times) {
   if (times < 0)
     fail(ErrorCode::kOutOfRange, what + ": times=" + std::to_string(times) + " is negative", {{"times", times}});
   if (times == 0) return curve;
+  check_bezier_degree(static_cast<long long>(bezier_degree(curve)) + times, what + " (the result)");
   const int n = bezier_degree(curve);
   const auto& b = curve.P;
   std::vector<Vec3> e(curve.P.size() + static_cast<std::size_t>(times));
@@ -443,6 +456,7 @@ BezierCurve bezier_interpolate(const std::vector<Vec3>& Q, const std::vector<dou
          what + ": " + std::to_string(Q.size()) + " points but " + std::to_string(t.size()) +
              " parameters (need one t_j per Q_j)",
          {{"points", Q.size()}, {"parameters", t.size()}});
+  check_bezier_degree(static_cast<long long>(Q.size()) - 1, what);
   validate_interval(a, b, what);
   for (std::size_t j = 0; j < Q.size(); ++j) require_finite(Q[j], what, at("Q", j));
   std::vector<double> s(t.size());

@@ -30,8 +30,15 @@ namespace gllab::spline {
 /// still count as a or b: a few units of round-off, nothing a user would type.
 inline constexpr double kBezierParameterSlack = 4 * std::numeric_limits<double>::epsilon();
 
+/// The highest Bézier degree the core takes: 64 (65 control points). The labs
+/// go to degree 10; de Casteljau's scheme for drawing (de_casteljau) holds
+/// (n + 1)(n + 2)/2 points, 2,145 at the limit. Degree elevation, interpolation
+/// and the Bernstein functions check it too.
+inline constexpr int kMaxBezierDegree = 64;
+
 /// Throws std::invalid_argument naming the values when the curve has no
-/// control points, a or b is not finite, a >= b, or a control point is not finite.
+/// control points or more than kMaxBezierDegree + 1, a or b is not finite,
+/// a >= b, or a control point is not finite.
 void validate(const BezierCurve& curve);
 
 /// n = P.size() - 1.

@@ -27,6 +27,11 @@ int span_at(const BsplineCurve& c, double u, Side side) {
 
 void validate(const BsplineCurve& curve) {
   if (curve.P.empty()) fail(ErrorCode::kEmptyInput, "curve: no control points (empty input)");
+  if (curve.P.size() > kMaxControlPoints)
+    fail(ErrorCode::kOutOfRange,
+         "curve: " + std::to_string(curve.P.size()) + " control points, more than the limit of " +
+             std::to_string(kMaxControlPoints) + " (kMaxControlPoints)",
+         {{"points", curve.P.size()}});
   if (curve.dimension != 2 && curve.dimension != 3)
     fail(ErrorCode::kDimension, "curve: dimension=" + std::to_string(curve.dimension) + " must be 2 or 3",
          {{"dimension", curve.dimension}});
@@ -94,9 +99,9 @@ BsplineCurve clamped_curve(const std::vector<Vec3>& points, int p, int dimension
 
 // ---- evaluation ----------------------------------------------------------------
 
-Vec4 homogeneous_curve_point(const BsplineCurve& curve, double u, Side side) {
-  validate(curve);
-  check_param(u, domain(curve.p, curve.U));
+namespace {
+// Cw(u) of a curve and a u already checked (A4.1 before the projection).
+Vec4 homogeneous_point_of_checked(const BsplineCurve& curve, double u, Side side) {
   const int p = curve.p;
   const int span = span_at(curve, u, side);
   double N[kMaxDegree + 1];
@@ -107,6 +112,13 @@ Vec4 homogeneous_curve_point(const BsplineCurve& curve, double u, Side side) {
     Cw += N[j] * homogeneous(curve.P[i], curve.rational() ? curve.w[i] : 1.0);
   }
   return Cw;
+}
+}  // namespace
+
+Vec4 homogeneous_curve_point(const BsplineCurve& curve, double u, Side side) {
+  validate(curve);
+  check_param(u, domain(curve.p, curve.U));
+  return homogeneous_point_of_checked(curve, u, side);
 }
 
 Vec3 rational_curve_point(const BsplineCurve& curve, double u, Side side) {
@@ -142,12 +154,18 @@ std::vector<Pt> derivs_impl(const BsplineCurve& c, double u, int d, Side side, P
 }
 }  // namespace
 
-std::vector<Vec3> rational_curve_derivs(const BsplineCurve& curve, double u, int d, Side side) {
-  validate(curve);
-  check_param(u, domain(curve.p, curve.U));
+namespace {
+
+void check_order(int d) {
   if (d < 0)
     fail(ErrorCode::kNegativeDerivativeOrder, "curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0",
          {{"d", d}});
+}
+
+// A3.2 on the points, or on the homogeneous points and then A4.2; the curve
+// and u already checked.
+std::vector<Vec3> derivs_of_checked(const BsplineCurve& curve, double u, int d, Side side, bool by_weights) {
+  if (!by_weights) return derivs_impl<Vec3>(curve, u, d, side, [&](int i) { return curve.P[i]; });
   // Derivatives of Cw = (A, w) (A3.2 in homogeneous space), then A4.2:
   // C^(k) = (A^(k) - sum_{i=1..k} Bin(k,i) w^(i) C^(k-i)) / w.
   const auto Cw = derivs_impl<Vec4>(curve, u, d, side, [&](int i) {
@@ -162,14 +180,43 @@ std::vector<Vec3> rational_curve_derivs(const BsplineCurve& curve, double u, int
   return CK;
 }
 
-std::vector<Vec3> curve_derivs(const BsplineCurve& curve, double u, int d, Side side) {
-  if (curve.rational()) return rational_curve_derivs(curve, u, d, side);
+}  // namespace
+
+std::vector<Vec3> rational_curve_derivs(const BsplineCurve& curve, double u, int d, Side side) {
   validate(curve);
   check_param(u, domain(curve.p, curve.U));
-  if (d < 0)
-    fail(ErrorCode::kNegativeDerivativeOrder, "curve_derivs: derivative order d=" + std::to_string(d) + " must be >= 0",
-         {{"d", d}});
-  return derivs_impl<Vec3>(curve, u, d, side, [&](int i) { return curve.P[i]; });
+  check_order(d);
+  return derivs_of_checked(curve, u, d, side, true);  // weights 1 for a polynomial curve
+}
+
+std::vector<Vec3> curve_derivs(const BsplineCurve& curve, double u, int d, Side side) {
+  validate(curve);
+  check_param(u, domain(curve.p, curve.U));
+  check_order(d);
+  return derivs_of_checked(curve, u, d, side, curve.rational());
+}
+
+CurveEvaluator::CurveEvaluator(BsplineCurve curve) : curve_(std::move(curve)) {
+  validate(curve_);
+  domain_ = spline::domain(curve_.p, curve_.U);
+}
+
+Vec3 CurveEvaluator::point(double u, Side side) const {
+  check_param(u, domain_);
+  if (curve_.rational()) return project(homogeneous_point_of_checked(curve_, u, side));
+  const int p = curve_.p;
+  const int span = span_at(curve_, u, side);
+  double N[kMaxDegree + 1];
+  basis_funs(span, u, p, curve_.U, N);
+  Vec3 C;
+  for (int j = 0; j <= p; ++j) C += N[j] * curve_.P[span - p + j];
+  return C;
+}
+
+std::vector<Vec3> CurveEvaluator::derivs(double u, int d, Side side) const {
+  check_param(u, domain_);
+  check_order(d);
+  return derivs_of_checked(curve_, u, d, side, curve_.rational());
 }
 
 DeBoorConstruction de_boor(const BsplineCurve& curve, double u) {

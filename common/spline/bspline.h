@@ -90,6 +90,25 @@ std::vector<Vec3> curve_derivs(const BsplineCurve& curve, double u, int d, Side 
 /// the derivatives of Cw (computed with A3.2 on the homogeneous points).
 std::vector<Vec3> rational_curve_derivs(const BsplineCurve& curve, double u, int d, Side side = Side::Right);
 
+/// A curve checked once (validate, in the constructor), then evaluated with
+/// only u (and d) checked per call: O(p^2) per point instead of the O(n) check
+/// of curve_point and curve_derivs. What tessellation, arc length and the
+/// tools use when they evaluate one curve many times.
+class CurveEvaluator {
+ public:
+  explicit CurveEvaluator(BsplineCurve curve);
+  const BsplineCurve& curve() const { return curve_; }
+  ParamInterval domain() const { return domain_; }
+  /// C(u), as curve_point.
+  Vec3 point(double u, Side side = Side::Right) const;
+  /// C(u), C'(u), ..., C^(d)(u), as curve_derivs.
+  std::vector<Vec3> derivs(double u, int d, Side side = Side::Right) const;
+
+ private:
+  BsplineCurve curve_;
+  ParamInterval domain_;
+};
+
 /// de Boor's algorithm with every intermediate point, for drawing the
 /// construction. levels[0] are the p + 1 control points P[span-p..span];
 /// levels[r] holds p + 1 - r points; levels[p][0] == point == C(u). For a NURBS

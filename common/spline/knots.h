@@ -7,12 +7,17 @@
 // w weights (empty: polynomial). The domain of a curve is [U[p], U[n+1]].
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace gllab::spline {
 
 /// The largest degree the allocation-free paths support (GLU stops at order 24).
 inline constexpr int kMaxDegree = 31;
+/// The most control points of a curve, and of a surface (n + 1)(m + 1): 10^6.
+/// The labs' largest net has 400 (20 x 20, the benchmark's surface); a spline
+/// file at its size limit (common/io, 8 MiB) holds at most about 10^6 points.
+inline constexpr std::size_t kMaxControlPoints = 1000000;
 
 /// The knot-vector part of validate(), for curves and for each direction of a
 /// surface: `what` starts the messages ("knot vector", "V knot vector", ...) and

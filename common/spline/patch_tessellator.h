@@ -159,6 +159,8 @@ class PatchTessellator {
   bool outside_domain(Vec2 p) const;
   TrimPolygon move_runs_off_domain_edge(const TrimPolygon& poly) const;
   TrimPolygon refine_trim_edges(const TrimPolygon& poly, std::vector<char>& refined);
+  /// Throws when `count` trim points would pass kMaxTrimPoints (tessellate.h).
+  void check_trim_points(std::size_t count) const;
   bool chord_within(Vec2 a, Vec2 b) const;
   void register_trim_polygon(const std::vector<Vec2>& poly);
   int winding_row(double y) const;

@@ -13,10 +13,12 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "spline/bspline.h"
+#include "spline/errors.h"
 
 namespace gllab::spline::detail {
 
@@ -54,9 +56,10 @@ void PatchTessellator::prepare_trims(const std::vector<TrimLoop>& trims) {
   const double cell =
       std::min((dom_.u1 - dom_.u0) / static_cast<double>(nu_), (dom_.v1 - dom_.v0) / static_cast<double>(nv_));
   const TrimCurveFlattener flatten_piece = [&](const BsplineCurve& c) {
-    const ParamInterval d = domain(c);
+    const CurveEvaluator trim(c);  // checked once, not at every sample
+    const ParamInterval d = trim.domain();
     const auto uv_at = [&](double t) {
-      const Vec3 p = curve_point(c, t);
+      const Vec3 p = trim.point(t);
       return clamp_uv({p.x, p.y});
     };
     FlattenOptions fo;
@@ -80,6 +83,7 @@ void PatchTessellator::prepare_trims(const std::vector<TrimLoop>& trims) {
   std::vector<TrimPolygon> polygons;
   for (std::size_t l = 0; l < trims.size(); ++l) {
     TrimPolygon poly = flatten_trim_loop(trims[l], flatten_piece, l);
+    check_trim_points(poly.size());
     for (Vec2& p : poly) p = clamp_uv({snap(p.x, edges_u, eps_u), snap(p.y, edges_v, eps_v)});
     polygons.push_back(std::move(poly));
   }
@@ -231,6 +235,14 @@ TrimPolygon PatchTessellator::move_runs_off_domain_edge(const TrimPolygon& poly)
 /// Splits each trim edge until its image on the surface is within the
 /// tolerance (parametric error): GLU leaves gluPwlCurve edges alone and fans
 /// slivers across the trimmed region (docs/glu.md); this is the fix.
+void PatchTessellator::check_trim_points(std::size_t count) const {
+  if (count > kMaxTrimPoints)
+    fail(ErrorCode::kOutOfRange,
+         "tessellate: the trims need more than " + std::to_string(kMaxTrimPoints) + " points at tolerance=" +
+             num(opt_.tolerance) + " (kMaxTrimPoints; a coarser tolerance needs fewer)",
+         {{"tolerance", opt_.tolerance}, {"points", count}});
+}
+
 TrimPolygon PatchTessellator::refine_trim_edges(const TrimPolygon& poly, std::vector<char>& refined) {
   TrimPolygon out;
   refined.clear();
@@ -248,6 +260,7 @@ TrimPolygon PatchTessellator::refine_trim_edges(const TrimPolygon& poly, std::ve
     const auto on_surface = [&](double s) { const Vec2 q = at(s); return evaluate(q.x, q.y).point; };
     const auto samples = flatten_curve(on_surface, 0, 1, fo);
     for (std::size_t i = 1; i + 1 < samples.size(); ++i) out.push_back(at(samples[i].t)), refined.push_back(1);
+    check_trim_points(trim_points_.size() + out.size());
   }
   return out;
 }

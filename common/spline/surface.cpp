@@ -239,6 +239,11 @@ void validate(const BsplineSurface& surface) {
     fail(ErrorCode::kTooFewPoints,
          what + ": (nu, nv)=" + ij_text(surface.nu, surface.nv) + " (need at least one control point each way)",
          {{"nu", surface.nu}, {"nv", surface.nv}});
+  if (static_cast<double>(surface.nu) * surface.nv > static_cast<double>(kMaxControlPoints))
+    fail(ErrorCode::kOutOfRange,
+         what + ": (nu, nv)=" + ij_text(surface.nu, surface.nv) + ", more than " +
+             std::to_string(kMaxControlPoints) + " control points (kMaxControlPoints)",
+         {{"nu", surface.nu}, {"nv", surface.nv}});
   validate_knots(surface.p, surface.nu, surface.U, "U knot vector");
   validate_knots(surface.q, surface.nv, surface.V, "V knot vector", "V");
   const std::size_t count = uz(surface.nu) * uz(surface.nv);

@@ -86,11 +86,12 @@ std::vector<TaggedPoint> piece_points(const TrimPiece& piece, std::size_t loop, 
     for (std::size_t i = 0; i < points.size(); ++i) out.push_back({points[i], k, i, 0, false});
     return out;
   }
-  const ParamInterval dom = domain(curve);
+  const CurveEvaluator evaluator(curve);  // checked once, not at every sample
+  const ParamInterval dom = evaluator.domain();
   FlattenOptions options;
   options.tolerance = tolerance;
   options.error = ChordError::Chordal;
-  const auto samples = flatten_curve([&curve](double t) { return curve_point(curve, t); }, dom.a, dom.b, options);
+  const auto samples = flatten_curve([&evaluator](double t) { return evaluator.point(t); }, dom.a, dom.b, options);
   for (const CurveSample& s : samples) out.push_back({uv_of(s.point), k, 0, s.t, true});
   return out;
 }

@@ -1148,5 +1148,23 @@ TEST(ContinuationPoints, ErrorsNameKAndTheLength) {
   EXPECT_ERROR_HAS(continuation_points(a, 1, std::nan("")), "next_length=nan is not finite");
 }
 
+// kMaxBezierDegree: degree 64 is a curve, 65 is refused with one line, by every
+// entry point that would build or evaluate one (issue 20: degree 20,000 took 8 s
+// and 4.7 GB for one point).
+TEST(BezierLimits, DegreeAboveTheLimitIsRefused) {
+  BezierCurve ok;
+  for (int i = 0; i <= kMaxBezierDegree; ++i) ok.P.push_back({double(i), 0, 0});
+  EXPECT_NO_THROW(validate(ok));
+  EXPECT_NEAR(bezier_point(ok, 0.5).x, kMaxBezierDegree / 2.0, 1e-12);  // linear precision
+  BezierCurve too_high = ok;
+  too_high.P.push_back({0, 0, 0});
+  expect_contains(error_of([&] { validate(too_high); }), "degree n=65 is above the limit of 64");
+  expect_contains(error_of([&] { bezier_point(too_high, 0.5); }), "degree n=65");
+  expect_contains(error_of([&] { degree_elevate(ok, 1); }), "degree n=65");
+  expect_contains(error_of([] { bernstein(0, 1000000000, 0.5); }), "degree n=1000000000");
+  expect_contains(error_of([] { bernstein_all(65, 0.5); }), "degree n=65");
+  expect_contains(error_of([] { bezier_matrix(65); }), "degree n=65");
+}
+
 }  // namespace
 }  // namespace gllab::spline

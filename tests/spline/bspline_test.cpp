@@ -1210,5 +1210,43 @@ TEST(FromBezierSegments, ErrorsNameTheSegment) {
   EXPECT_ERROR_HAS(from_bezier_segments({point}), "segment[0] has degree 0");
 }
 
+// ---- CurveEvaluator: checked once, the same values ---------------------------------
+
+// The evaluator runs the same algorithms as curve_point and curve_derivs (A3.1,
+// A3.2, A4.1, A4.2) without re-checking the curve: the values are identical.
+TEST(CurveEvaluator, GivesExactlyWhatTheCheckedCallsGive) {
+  std::mt19937 rng(20);
+  std::uniform_real_distribution<double> coord(-2, 2), weight(0.5, 2), unit(0, 1);
+  for (bool rational : {false, true}) {
+    BsplineCurve c = clamped_curve({{0, 0, 0}, {1, 2, 1}, {2, -1, 0}, {3, 1, 2}, {4, 0, 0}, {5, 2, 1}}, 3);
+    if (rational)
+      for (std::size_t i = 0; i < c.P.size(); ++i) c.w.push_back(weight(rng));
+    const CurveEvaluator e(c);
+    for (int k = 0; k < 200; ++k) {
+      const double u = k == 0 ? 0.0 : k == 1 ? 1.0 : unit(rng);
+      EXPECT_EQ(e.point(u), curve_point(c, u)) << "u = " << u;
+      EXPECT_EQ(e.derivs(u, 3), curve_derivs(c, u, 3)) << "u = " << u;
+    }
+  }
+}
+
+TEST(CurveEvaluator, ChecksTheCurveOnceAndEveryParameter) {
+  BsplineCurve bad = clamped_curve({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, 2);
+  bad.U[3] = -1;  // decreasing
+  EXPECT_THROW(CurveEvaluator{bad}, SplineError);
+  const CurveEvaluator e(clamped_curve({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, 2));
+  EXPECT_ERROR_HAS(e.point(1.5), "u=1.5");
+  EXPECT_ERROR_HAS(e.derivs(std::nan(""), 1), "u=nan");
+  EXPECT_ERROR_HAS(e.derivs(0.5, -1), "d=-1");
+}
+
+TEST(CurveLimits, ControlPointsHaveALimit) {
+  BsplineCurve c;
+  c.p = 1;
+  c.P.assign(kMaxControlPoints + 1, Vec3{});
+  c.U = clamped_uniform_knots(static_cast<int>(c.P.size()) - 1, 1);
+  EXPECT_ERROR_HAS(validate(c), "1000001 control points, more than the limit of 1000000");
+}
+
 }  // namespace
 }  // namespace gllab::spline

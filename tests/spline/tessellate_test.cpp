@@ -1067,5 +1067,25 @@ TEST(MeshFidelity, BadInputIsRejected) {
   EXPECT_ERROR_HAS(surface_area(b, m), "the mesh has 3 (u, v) for 4 vertices");
 }
 
+// kMaxTrimPoints: a tolerance far below the surface's size would flatten and
+// refine a curve trim into billions of points (issue 20: minutes, gigabytes).
+// It is refused with one line naming the tolerance; the same trim at a real
+// tolerance tessellates.
+TEST(TessellateLimits, TrimPointsHaveALimit) {
+  const Bicubic b;
+  TrimPiece piece;
+  piece.curve = circle({0.5, 0.5, 0}, 0.3);  // counter-clockwise: an outer loop
+  const std::vector<TrimLoop> trims{TrimLoop{{piece}}};
+  EXPECT_GT(tessellate_surface(b, {0, 1, 0, 1}, TessellationOptions::adaptive(1e-3), trims).triangles.size(), 0u);
+  try {
+    tessellate_surface(b, {0, 1, 0, 1}, TessellationOptions::adaptive(1e-300), trims);
+    FAIL() << "tolerance 1e-300 accepted";
+  } catch (const SplineError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kOutOfRange);
+    EXPECT_NE(std::string(e.what()).find("more than 1048576 points at tolerance=1e-300"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace gllab::spline
