@@ -16,9 +16,11 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "files/files.h"
 #include "image/pam.h"
@@ -83,10 +85,18 @@ std::string mib(std::uintmax_t bytes) { return std::to_string(bytes >> 20) + " M
 // A temporary file for a renderer's --text-out, removed when done.
 class TextFile {
  public:
+  // Throws std::runtime_error when there is no usable temporary folder (the
+  // grading stops: it is not the student's fault).
   TextFile() {
-    std::string name = (fs::temp_directory_path() / "gllab-text-XXXXXX").string();
+    std::error_code ec;
+    const fs::path dir = fs::temp_directory_path(ec);
+    if (ec)
+      throw std::runtime_error("no temporary folder for a renderer's text (" + ec.message() + ")");
+    std::string name = (dir / "gllab-text-XXXXXX").string();
     const int fd = mkstemp(name.data());
-    if (fd < 0) throw std::runtime_error("cannot create a temporary file in " + fs::temp_directory_path().string());
+    if (fd < 0)
+      throw std::runtime_error("cannot create a temporary file in " + dir.string() + " (" +
+                               std::strerror(errno) + ")");
     close(fd);
     path_ = name;
   }

@@ -159,6 +159,16 @@ TEST(LabgradeLimits, AThreadThatCannotStartLeavesTheWorkToTheThreadsThatDid) {
 #endif
 }
 
+// A failure of the grading itself in a worker thread (here: no temporary
+// folder for a renderer's text) stops every thread and is one line, exit 2
+// (before: std::terminate from the thread).
+TEST(LabgradeLimits, NoTemporaryFolderStopsTheGradingWithOneLine) {
+  const ProcessResult r =
+      run_process({labgrade(), "--build", kBinDir.string(), "--labs", "01", "--jobs", "2"},
+                  {"TMPDIR=/nonexistent/gllab"}, kCaseTimeoutSeconds);
+  expect_usage_error(r, "labgrade: no temporary folder for a renderer's text (");
+}
+
 // ---- 3: a renderer's output is capped ------------------------------------------------
 
 TEST(LabgradeLimits, ARendererThatWritesWithoutEndIsKilledAndFailsItsView) {
