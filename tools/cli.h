@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "files/files.h"      // finish_stdout
 #include "io/spline_json.h"  // FileError
 
 namespace gllab::cli {
@@ -93,12 +94,16 @@ inline SubcommandArgs parse_subcommand(int argc, char** argv, int first,
       if (i + 1 >= argc) throw UsageError("--" + key + " needs a value");
       out.options[key] = argv[++i];
     }
+    // An empty value is never meant (eval --at '' would evaluate nothing and succeed).
+    if (out.options[key].empty()) throw UsageError("--" + key + " '' is empty (--" + key + " needs a value)");
   }
   return out;
 }
 
 /// A tool's main: runs `run(argc, argv)` and turns each kind of error into one line on
 /// stderr after `prefix` (newlines in the message become spaces) and its exit status.
+/// After a run that succeeded, standard output is flushed and checked: a write that
+/// failed (a full disk, a closed pipe) is exit 1 with one line, never a silent 0.
 template <class Run>
 int main_reporting(const std::string& prefix, Run run, int argc, char** argv) {
   const auto report = [&prefix](std::string message, int status) {
@@ -107,7 +112,14 @@ int main_reporting(const std::string& prefix, Run run, int argc, char** argv) {
     return status;
   };
   try {
-    return run(argc, argv);
+    const int status = run(argc, argv);
+    // What was printed must have reached stdout (a full disk, a closed pipe):
+    // checked at the end, the last flush included, before exit 0.
+    std::cout.flush();
+    files::finish_stdout();
+    return status;
+  } catch (const files::FileError& e) {
+    return report(e.what(), kFailed);
   } catch (const UsageError& e) {
     return report(e.what(), kBadInput);
   } catch (const OutputError& e) {

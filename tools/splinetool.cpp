@@ -19,6 +19,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -75,6 +76,9 @@ std::vector<std::string> split_list(const std::string& text, char separator) {
   if (!text.empty() && text.back() == separator) parts.push_back("");
   return parts;
 }
+
+/// The most parameter values one call evaluates (--at's list, --samples).
+constexpr int kMaxParameters = 1000000;
 
 /// count parameters from a to b, both ends included (the last is exactly b).
 std::vector<double> even_parameters(double a, double b, int count) {
@@ -137,10 +141,11 @@ CurveView curve_view(const SplineFile& file, const std::string& path, const std:
     view.dimension = b->dimension;
     view.derivs = [curve = *b](double u, int K) { return bezier_derivatives(curve, u, K); };
   } else {
-    BsplineCurve c = curve_in(file, path, command);
-    view.domain = domain(c);
-    view.dimension = c.dimension;
-    view.derivs = [curve = std::move(c)](double u, int K) { return curve_derivs(curve, u, K); };
+    // Checked once here; each evaluation then checks only u (no O(n) pass per point).
+    const auto curve = std::make_shared<const CurveEvaluator>(curve_in(file, path, command));
+    view.domain = curve->domain();
+    view.dimension = curve->curve().dimension;
+    view.derivs = [curve](double u, int K) { return curve->derivs(u, K); };
   }
   return view;
 }
@@ -151,10 +156,14 @@ std::vector<double> curve_parameters(const std::map<std::string, std::string>& o
   const auto at = option(options, "at");
   const auto samples = option(options, "samples");
   if (at && samples) throw UsageError("give --at or --samples, not both");
-  if (samples) return even_parameters(dom.a, dom.b, parse_count(*samples, "--samples", 2, 1000000));
+  if (samples) return even_parameters(dom.a, dom.b, parse_count(*samples, "--samples", 2, kMaxParameters));
   if (!at) throw UsageError("eval needs --at U,U,... or --samples N");
   std::vector<double> t;
-  for (const std::string& part : split_list(*at, ',')) {
+  const std::vector<std::string> parts = split_list(*at, ',');
+  if (parts.size() > static_cast<std::size_t>(kMaxParameters))
+    throw UsageError("--at: " + std::to_string(parts.size()) + " parameters, more than the limit of " +
+                     std::to_string(kMaxParameters) + " per call");
+  for (const std::string& part : parts) {
     const double u = parse_number(part, "--at");
     require_inside(u, dom, "--at");
     t.push_back(u);

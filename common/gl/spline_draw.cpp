@@ -236,12 +236,11 @@ void draw_curve(const spline::BsplineCurve& curve, Rgb colour, float width, doub
         spline::knot_multiplicity(curve.U, curve.U[i]) > curve.p)
       breaks.push_back(curve.U[i]);
   breaks.push_back(dom.b);
+  const spline::CurveEvaluator evaluator(curve);  // checked once, not at every sample
   for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
     const double a = breaks[k], b = breaks[k + 1];
     draw_curve(
-        [&](double u) {
-          return spline::curve_point(curve, u, u == b ? spline::Side::Left : spline::Side::Right);
-        },
+        [&](double u) { return evaluator.point(u, u == b ? spline::Side::Left : spline::Side::Right); },
         a, b, colour, width, tolerance);
   }
 }

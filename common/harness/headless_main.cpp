@@ -17,6 +17,7 @@
 #include "harness/lab.h"
 #include "harness/offscreen.h"
 #include "harness/options.h"
+#include "files/files.h"
 #include "image/image.h"
 #include "image/pam.h"
 #include "io/spline_json.h"
@@ -37,10 +38,12 @@ int main(int argc, char** argv) {
                                      gllab::Runner::kHeadless);
       if (options.help) {
         std::fputs(gllab::usage_text(lab, program, gllab::Runner::kHeadless).c_str(), stdout);
+        gllab::files::finish_stdout();  // a full disk or a closed pipe: exit 1, one line
         return 0;
       }
       if (options.list_views) {
         std::fputs(gllab::list_views_text(lab).c_str(), stdout);
+        gllab::files::finish_stdout();
         return 0;
       }
       parsed = gllab::make_state(lab, options);
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
       std::printf("renderer: %s\ngl_version: %s\nglu_version: %s\n", context.renderer().c_str(),
                   reinterpret_cast<const char*>(glGetString(GL_VERSION)),
                   reinterpret_cast<const char*>(gluGetString(GLU_VERSION)));
+      gllab::files::finish_stdout();
       return 0;
     }
     if (lab.init) lab.init();
@@ -103,6 +107,7 @@ int main(int argc, char** argv) {
     gllab::write_png(options.out, image);
     if (options.print_text)
       for (const std::string& line : printed) std::printf("%s\n", line.c_str());
+    gllab::files::finish_stdout();
     return 0;
   } catch (const std::exception& e) {
     return fail(1, e.what());

@@ -6,6 +6,7 @@
 #include "io/spline_json.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -86,7 +87,12 @@ const Param& State::find(const std::string& name) const {
 double State::get(const std::string& name) const { return find(name).value; }
 
 int State::integer(const std::string& name) const {
-  return static_cast<int>(std::lround(get(name)));
+  const double v = get(name);
+  // A whole-number parameter (a count, an index, a choice): a fractional value
+  // from --set is refused here, where the lab reads it, not rounded.
+  if (v != std::floor(v))
+    throw std::invalid_argument("parameter " + name + "=" + format_number(v) + " is not a whole number");
+  return static_cast<int>(v);
 }
 
 void State::set(const std::string& name, double value) {
@@ -97,6 +103,11 @@ void State::set(const std::string& name, double value) {
     throw std::invalid_argument("parameter " + name + "=" + format_number(value) +
                                 " is out of range [" + format_number(p.lo) + ", " +
                                 format_number(p.hi) + "]");
+  // A switch (range [0, 1], default 0 or 1) is off or on: 0.5 is neither.
+  const double preset = defaults_[static_cast<std::size_t>(&p - params_.data())];
+  const bool is_switch = p.lo == 0 && p.hi == 1 && (preset == 0 || preset == 1);
+  if (is_switch && value != 0 && value != 1)
+    throw std::invalid_argument("parameter " + name + "=" + format_number(value) + " is a switch: 0 or 1");
   p.value = value;
 }
 
@@ -112,10 +123,14 @@ void State::set_from_text(const std::string& assignment) {
     const std::string list = name.substr(0, bracket);
     const PointList& l = find_list(list);  // unknown lists before malformed indices
     const std::string index_text = name.substr(bracket + 1, name.size() - bracket - 2);
-    double index = 0;
-    if (name.back() != ']' || index_text.find_first_not_of("0123456789") != std::string::npos ||
-        !parse_number(index_text, index))
+    if (name.back() != ']' || index_text.empty() || index_text.find_first_not_of("0123456789") != std::string::npos)
       throw std::invalid_argument("malformed --set '" + assignment + "' (expected " + list + "[i]=x,y)");
+    // The whole index, exactly: an index too long for any list is one that does not exist.
+    std::size_t index = l.points.size();
+    const auto [end, ec] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+    if (ec != std::errc() || end != index_text.data() + index_text.size() || index >= l.points.size())
+      throw std::invalid_argument("point " + list + "[" + index_text + "] does not exist (" + list +
+                                  " has points 0.." + std::to_string(l.points.size() - 1) + ")");
     std::vector<double> xyz;
     std::size_t start = 0;
     while (true) {
@@ -131,7 +146,7 @@ void State::set_from_text(const std::string& assignment) {
     if (xyz.size() < 2 || xyz.size() > 3)
       throw std::invalid_argument("malformed --set '" + assignment + "': " + std::to_string(xyz.size()) +
                                   " coordinates (expected x,y or x,y,z)");
-    const auto i = static_cast<std::size_t>(index);
+    const std::size_t i = index;
     const double z = xyz.size() == 3 ? xyz[2] : (i < l.points.size() ? l.points[i].z : 0.0);
     move_point(list, i, {xyz[0], xyz[1], z});
     return;

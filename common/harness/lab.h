@@ -54,7 +54,10 @@ struct View {
   bool orbit() const { return (flags & kOrbit) != 0; }
 };
 
-/// A lab parameter: a number with a range. Toggles are 0/1.
+/// A lab parameter: a number with a range. A parameter with the range [0, 1]
+/// and the default 0 or 1 is a switch: only 0 and 1 may be set. A count, an
+/// index or a choice is read with State::integer, which refuses a fractional
+/// value (--set ticks=3.5 fails with one line instead of being rounded).
 struct Param {
   std::string name;
   double value = 0;  // the default

@@ -42,6 +42,8 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
       if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      // An empty value is never meant: --view '' would draw the default view.
+      if (args[i + 1].empty()) throw UsageError(a + " '' is empty (" + a + " needs a value)");
       return args[++i];
     };
     if (a == "--view") o.view = value();

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "files/files.h"
 #include "gl/check.h"
 #include "gl/gl.h"
 #include "gl/pick.h"
@@ -325,10 +326,12 @@ int main(int argc, char** argv) {
         std::vector<std::string>(argv + 1, argv + argc), gllab::Runner::kWindow);
     if (options.help) {
       std::fputs(gllab::usage_text(window.lab, program, gllab::Runner::kWindow).c_str(), stdout);
+      gllab::files::finish_stdout();  // a full disk or a closed pipe: exit 1, one line
       return 0;
     }
     if (options.list_views) {
       std::fputs(gllab::list_views_text(window.lab).c_str(), stdout);
+      gllab::files::finish_stdout();
       return 0;
     }
     window.state = gllab::make_state(window.lab, options);
