@@ -94,6 +94,12 @@ const std::filesystem::path& refs() {
     check(mkdtemp(name) != nullptr, "cannot make a temporary folder");
     return std::filesystem::path(name);
   }();
+  static const struct Remove {
+    ~Remove() {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  } remove_at_exit;
   return dir;
 }
 

@@ -67,6 +67,9 @@ const std::string& load_path() {
     close(fd);
     return std::string(name);
   }();
+  static const struct Remove {
+    ~Remove() { std::remove(path.c_str()); }
+  } remove_at_exit;
   return path;
 }
 
