@@ -30,7 +30,7 @@
 #                    (ASan + UBSan) and run each for FUZZ_SECONDS (default 60) seconds;
 #                    FUZZ_OPT=-O0 builds twice as fast, runs slower (CI uses it)
 #                    (tests/fuzz/README.md; needs clang and libclang-rt-dev)
-#   make clean       remove build/, build-sanitize/, build-clang/, build-bench/ and out/
+#   make clean       remove build/, build-sanitize/, build-clang/, build-bench/, build-fuzz/ and out/
 
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
@@ -117,4 +117,4 @@ fuzz:
 	tests/fuzz/run.sh run $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(CLANG_BUILD) $(BENCH_BUILD) out
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(CLANG_BUILD) $(BENCH_BUILD) $(FUZZ_BUILD) out

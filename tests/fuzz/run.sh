@@ -4,8 +4,8 @@
 #   tests/fuzz/run.sh run BUILD SECONDS  each fuzzer of BUILD/bin for SECONDS seconds
 # A run first replays tests/fuzz/crashes/<fuzzer>/ (every input a fuzzer once crashed
 # on: a regression test), then fuzzes from BUILD/corpus/<fuzzer> (kept between runs,
-# so longer runs build on shorter ones) and the seeds: tests/fuzz/seeds/<fuzzer>/,
-# examples/, tests/io/bad/ and reference_images/MANIFEST, copied to BUILD/seeds/.
+# so longer runs build on shorter ones) and the seeds: tests/fuzz/seed_inputs/<fuzzer>/,
+# examples/, tests/io/bad/ and reference_images/MANIFEST, copied to BUILD/seed_inputs/.
 # It prints one line per fuzzer (executions, executions per second, corpus size)
 # and exits 1 when any fuzzer found something: its input is in BUILD/artifacts/.
 set -eu
@@ -42,9 +42,9 @@ check() {
   rm -rf "$probe"
 }
 
-# The seeds of one fuzzer, copied fresh into BUILD/seeds/<fuzzer>.
+# The seeds of one fuzzer, copied fresh into BUILD/seed_inputs/<fuzzer>.
 seeds() {
-  dir=$1/seeds/$2
+  dir=$1/seed_inputs/$2
   rm -rf "$dir"
   mkdir -p "$dir"
   case $2 in
@@ -52,14 +52,14 @@ seeds() {
       cp "$repo"/examples/*.json "$repo"/examples/csg/*.json "$dir"/
       for seed in "$repo"/tests/io/bad/*.json; do cp "$seed" "$dir/bad_$(basename "$seed")"; done ;;
     fuzz_options)
-      cp "$here"/seeds/options/* "$dir"/
+      cp "$here"/seed_inputs/options/* "$dir"/
       # --load with each example spline file after the NUL byte (fuzz_options.cpp).
       for seed in "$repo"/examples/*.json "$repo"/tests/io/bad/*.json; do
         { printf -- '--load\nfile.json\n--out\nx.png'; printf '\000'; cat "$seed"; } \
           > "$dir/load_$(basename "$seed" .json)"
       done ;;
     fuzz_grading)
-      cp "$here"/seeds/grading/* "$repo"/examples/*.png "$repo"/reference_images/MANIFEST "$dir"/ ;;
+      cp "$here"/seed_inputs/grading/* "$repo"/examples/*.png "$repo"/reference_images/MANIFEST "$dir"/ ;;
   esac
 }
 
@@ -87,7 +87,7 @@ run() {
     status=0
     "$bin" -dict="$(dict "$f")" -max_len="$(max_len "$f")" -timeout=10 -rss_limit_mb=2048 \
       -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$build/artifacts/$f/" \
-      "$build/corpus/$f" "$build/seeds/$f" > "$log" 2>&1 || status=$?
+      "$build/corpus/$f" "$build/seed_inputs/$f" > "$log" 2>&1 || status=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
     rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
     units=$(find "$build/corpus/$f" -type f | wc -l)

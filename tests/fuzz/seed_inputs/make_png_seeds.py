@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the small PNG and PAM seeds of tests/fuzz/seeds/grading/ (run once; the
+"""Writes the small PNG and PAM seeds of tests/fuzz/seed_inputs/grading/ (run once; the
 files are committed). One PNG per colour type and bit depth libpng expands to
 RGBA8 (common/image/image.h), one interlaced, and PAM frames as encode_pam writes them."""
 import os
