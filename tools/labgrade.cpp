@@ -33,6 +33,7 @@
 #include "grading.h"
 #include "image/compare.h"
 #include "image/image.h"
+#include "option_names.h"
 
 namespace fs = std::filesystem;
 using namespace gllab::grading;
@@ -79,15 +80,8 @@ const char kUsage[] =
     "  --quiet            no progress and no per-view table, only the summary\n\n"
     "Exit status: 0 all views passed, 1 some failed, 2 usage or input error.\n";
 
-// The names of --labs or --views: "a,b"; an empty name ("", "a,,b") is an error.
 std::vector<std::string> names(const std::string& option, const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  if (text.empty() || text.back() == ',' ||
-      std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
-    throw UsageError(option + " '" + text + "' has an empty name (expected NAME,NAME,...)");
-  return parts;
+  return gllab::option_names<UsageError>(option, text);
 }
 
 Settings parse(int argc, char** argv) {

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "files/files.h"
+#include "option_names.h"
 #include "process.h"
 
 namespace fs = std::filesystem;
@@ -81,16 +82,8 @@ std::vector<std::string> split(const std::string& text, char sep) {
   return parts;
 }
 
-// The names of --labs or --views: "a,b"; an empty name ("", "a,,b") is an
-// error, not "all" (an empty --labs must not rewrite every reference).
 std::vector<std::string> names(const std::string& option, const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  if (text.empty() || text.back() == ',' ||
-      std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
-    throw UsageError(option + " '" + text + "' has an empty name (expected NAME,NAME,...)");
-  return parts;
+  return gllab::option_names<UsageError>(option, text);
 }
 
 // A renderer run with the grader's output limit (process.h): a program that

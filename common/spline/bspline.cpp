@@ -125,10 +125,10 @@ Vec3 rational_curve_point(const BsplineCurve& curve, double u, Side side) {
   return project(homogeneous_curve_point(curve, u, side));
 }
 
-Vec3 curve_point(const BsplineCurve& curve, double u, Side side) {
-  if (curve.rational()) return rational_curve_point(curve, u, side);
-  validate(curve);
-  check_param(u, domain(curve.p, curve.U));
+namespace {
+// C(u) of a curve and a u already checked: A4.1 for a rational curve, else A3.1.
+Vec3 point_of_checked(const BsplineCurve& curve, double u, Side side) {
+  if (curve.rational()) return project(homogeneous_point_of_checked(curve, u, side));
   // A3.1: find the span, the p + 1 non-zero basis functions, and sum.
   const int p = curve.p;
   const int span = span_at(curve, u, side);
@@ -137,6 +137,13 @@ Vec3 curve_point(const BsplineCurve& curve, double u, Side side) {
   Vec3 C;
   for (int j = 0; j <= p; ++j) C += N[j] * curve.P[span - p + j];
   return C;
+}
+}  // namespace
+
+Vec3 curve_point(const BsplineCurve& curve, double u, Side side) {
+  validate(curve);
+  check_param(u, domain(curve.p, curve.U));
+  return point_of_checked(curve, u, side);
 }
 
 namespace {
@@ -203,14 +210,7 @@ CurveEvaluator::CurveEvaluator(BsplineCurve curve) : curve_(std::move(curve)) {
 
 Vec3 CurveEvaluator::point(double u, Side side) const {
   check_param(u, domain_);
-  if (curve_.rational()) return project(homogeneous_point_of_checked(curve_, u, side));
-  const int p = curve_.p;
-  const int span = span_at(curve_, u, side);
-  double N[kMaxDegree + 1];
-  basis_funs(span, u, p, curve_.U, N);
-  Vec3 C;
-  for (int j = 0; j <= p; ++j) C += N[j] * curve_.P[span - p + j];
-  return C;
+  return point_of_checked(curve_, u, side);
 }
 
 std::vector<Vec3> CurveEvaluator::derivs(double u, int d, Side side) const {
