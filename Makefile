@@ -2,7 +2,9 @@
 # are missing and then calls these targets; with the packages present, use
 # make directly.
 #
-#   make             configure (Release) and build into build/
+#   make             configure (Release) and build into build/; HEADLESS=egl|osmesa|auto
+#                    picks the headless backend (default auto: EGL when libEGL is
+#                    found, else OSMesa; docs/platform.md), e.g. make test HEADLESS=osmesa
 #   make target TARGETS="15_bspline_curves"   build only these programs and
 #                    what they link (./lab open and ./lab render use it)
 #   make run         grade this build: render every lab view headless, compare
@@ -12,6 +14,8 @@
 #   make test        build and run the whole test suite through CTest
 #   make references  re-render reference_images/ and reference_images/MANIFEST
 #   make calibration re-measure the grading metric, rewrite README's numbers
+#   make backends    link every lab over OSMesa too (build/osmesa/) and check that
+#                    every view is byte-identical to the EGL build's (CI runs it)
 #   make sanitize    build in build-sanitize/ with ASan + UBSan and run the tests
 #   make clang       build in build-clang/ with clang -O0 (Debug) and run the tests;
 #                    its renders are graded against the GCC-built references there
@@ -39,19 +43,25 @@ BENCH_BUILD ?= build-bench
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_OPT ?= -O1
+# The headless backend (CMakeLists.txt, GLLAB_HEADLESS); empty keeps what build/ has.
+HEADLESS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all build target run grade test references calibration sanitize clang bench fuzz clean
+.PHONY: all configure build target run grade test references calibration backends sanitize clang bench fuzz clean
 
 all: build
 
 $(BUILD)/CMakeCache.txt:
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(if $(HEADLESS),-DGLLAB_HEADLESS=$(HEADLESS))
 
-build: $(BUILD)/CMakeCache.txt
+# HEADLESS given: configure again with it (only the runner and what links it change).
+configure: $(BUILD)/CMakeCache.txt
+	$(if $(HEADLESS),cmake -S . -B $(BUILD) -DGLLAB_HEADLESS=$(HEADLESS) > /dev/null,@:)
+
+build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-target: $(BUILD)/CMakeCache.txt
+target: configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(TARGETS)
 
 run: build
@@ -66,6 +76,15 @@ test: build
 references: build
 	$(BUILD)/bin/labrun --update-references
 	@echo "look at every image before committing; then: make calibration"
+
+# Every view rendered by the EGL build and by the same lab code linked over
+# OSMesa (build/osmesa/), compared byte for byte; then the twins are switched
+# off again, so build/ keeps one program per lab.
+backends: build
+	cmake -S . -B $(BUILD) -DGLLAB_OSMESA_TWINS=ON > /dev/null
+	status=0; cmake --build $(BUILD) -j $(JOBS) --target osmesa_twins && \
+	  $(BUILD)/bin/labrun --compare-builds $(BUILD)/osmesa || status=$$?; \
+	  cmake -S . -B $(BUILD) -DGLLAB_OSMESA_TWINS=OFF > /dev/null; exit $$status
 
 # Re-measure the grading metric (softpipe over every view, every real
 # mistake) and rewrite README.md's calibration block.

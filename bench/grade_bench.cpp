@@ -4,7 +4,7 @@
 // with the code labgrade runs (tools/grading.h), in the same run as the way a
 // script of one's own would do it, as the peer:
 //
-//   grade/in_memory/jobs:N   labgrade: each view rendered by <lab>_headless
+//   grade/in_memory/jobs:N   labgrade: each view rendered by <lab> --headless
 //                            --out - (a raw PAM frame on a pipe), compared in
 //                            memory, N renders at once; no file written
 //   grade/png_files/jobs:N   the same views rendered to PNG files (zlib level 6,
@@ -47,7 +47,7 @@ class PngFileSource : public Source {
     for (const ViewId& id : views) {
       if (id.error_view) {
         const gllab::ProcessResult r =
-            gllab::run_process({(kBin / (id.lab + "_headless")).string(), "--view", id.view, "--out", "-"});
+            gllab::run_process({(kBin / id.lab).string(), "--headless", "--view", id.view, "--out", "-"});
         out.push_back(Obtained::failed(gllab::first_line(r.err), r.exit_status));
         continue;
       }
@@ -77,7 +77,7 @@ class PngFileSource : public Source {
   gllab::Image obtain(const ViewId& id, const fs::path& text) const {
     const fs::path file = fs::temp_directory_path() /
                           ("gllab-grade-bench-" + std::to_string(getpid()) + "-" + id.name() + ".png");
-    const gllab::ProcessResult r = gllab::run_process({(kBin / (id.lab + "_headless")).string(), "--view", id.view,
+    const gllab::ProcessResult r = gllab::run_process({(kBin / id.lab).string(), "--headless", "--view", id.view,
                                                        "--out", file.string(), "--text-out", text.string()});
     if (r.exit_status != 0) throw SubmissionError(gllab::first_line(r.err));
     gllab::Image img = gllab::read_png(file.string());

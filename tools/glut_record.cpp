@@ -12,7 +12,8 @@
 // fails, because the headless replay could not reproduce it.
 //
 // The shapes are drawn through gllab::draw_glut_shape / draw_glut_sphere
-// (gl/glut_shapes_window.cpp): the very calls the window programs make.
+// (gl/glut_shapes_window.cpp, after use_freeglut_shapes): the very calls a lab makes in
+// its window.
 #include <GL/freeglut.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
@@ -351,6 +352,7 @@ int main(int argc, char** argv) {
   }
   int glut_argc = 1;
   glutInit(&glut_argc, argv);
+  gllab::use_freeglut_shapes();  // the shapes are freeglut's own calls, not the replay
   glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
   glutInitWindowSize(64, 64);
   glutCreateWindow("glut_record");

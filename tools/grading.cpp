@@ -140,7 +140,7 @@ class BuildSource : public Source {
   }
 
   // Error views one by one (they exit 1); the others of the lab in one run,
-  // <lab>_headless --views a,b,c --out - --text-out FILE: one PAM per view,
+  // <lab> --headless --views a,b,c --out - --text-out FILE: one PAM per view,
   // in order, until the first failure; the views after it are rendered one
   // by one for their own reasons.
   std::vector<Obtained> obtain_batch(const std::vector<ViewId>& views) const override {
@@ -165,13 +165,13 @@ class BuildSource : public Source {
     const fs::path program = renderer(views.front().lab);
     if (program.empty()) {
       for (std::size_t i = 0; i < views.size(); ++i)
-        out.push_back(Obtained::failed("no renderer " + views.front().lab + "_headless in " + dir_.string()));
+        out.push_back(Obtained::failed("no program " + views.front().lab + " in " + dir_.string()));
       return out;
     }
     std::string list;
     for (const ViewId& v : views) list += (list.empty() ? "" : ",") + v.view;
     const TextFile text;
-    std::vector<std::string> argv = {program.string(), views.size() == 1 ? "--view" : "--views", list,
+    std::vector<std::string> argv = {program.string(), "--headless", views.size() == 1 ? "--view" : "--views", list,
                                      "--out", "-", "--text-out", text.path().string()};
     const ProcessResult r = run_process(
         argv, env_,
@@ -187,7 +187,7 @@ class BuildSource : public Source {
       std::size_t at = 0;
       try {
         while (out.size() < views.size())
-          out.push_back(Obtained::drawn(decode_pam_at(r.out, at, views[out.size()].lab + "_headless")));
+          out.push_back(Obtained::drawn(decode_pam_at(r.out, at, views[out.size()].lab)));
       } catch (const ImageError& e) {
         if (views.size() == 1) out.push_back(Obtained::failed(e.what()));
         else out.clear();  // a torn or foreign stream: every view on its own
@@ -232,7 +232,7 @@ class BuildSource : public Source {
   }
 
   fs::path renderer(const std::string& lab) const {
-    for (const fs::path& p : {dir_ / (lab + "_headless"), dir_ / "bin" / (lab + "_headless")})
+    for (const fs::path& p : {dir_ / lab, dir_ / "bin" / lab})
       if (fs::is_regular_file(p)) return p;
     return {};
   }
@@ -450,8 +450,13 @@ bool looks_like_build(const fs::path& dir) {
   for (const fs::path& d : {dir, dir / "bin"}) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(d, ec)) {
+      // A lab's program: "NN_topic", no extension (an image folder holds
+      // <lab>__<view>.png and .txt files).
       const std::string name = entry.path().filename().string();
-      if (name.size() > 9 && name.compare(name.size() - 9, 9, "_headless") == 0) return true;
+      const bool lab_name = name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])) &&
+                            std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '_' &&
+                            name.find('.') == std::string::npos;
+      if (lab_name && entry.is_regular_file(ec)) return true;
     }
   }
   return false;

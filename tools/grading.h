@@ -179,8 +179,8 @@ struct SubmissionError : std::runtime_error {
 /// How long one render may take before it counts as hung (a student's endless loop).
 inline constexpr double kDefaultTimeoutSeconds = 60;
 
-/// A build of this repository: renders each view with <dir>/<lab>_headless
-/// (or <dir>/bin/<lab>_headless) --view V --out - (a raw frame, image/pam.h).
+/// A build of this repository: renders each view with <dir>/<lab> (or
+/// <dir>/bin/<lab>) --headless --view V --out - (a raw frame, image/pam.h).
 /// env entries NAME=VALUE go to the renderer (e.g. GALLIUM_DRIVER=softpipe).
 /// A render that runs longer than timeout_seconds (0 < t <= kMaxTimeoutSeconds,
 /// else UsageError), or writes more than kMaxRendererOutputBytes to stdout or
@@ -192,7 +192,7 @@ std::unique_ptr<Source> build_source(const std::filesystem::path& dir, std::vect
 /// kMaxImageFileBytes or kMaxTextFileBytes or wider or higher than
 /// kMaxImageSide fails its view with the reason; nothing is waited on.
 std::unique_ptr<Source> image_source(const std::filesystem::path& dir);
-/// Is dir a build (has headless programs) rather than a folder of images?
+/// Is dir a build (has lab programs, NN_topic) rather than a folder of images?
 bool looks_like_build(const std::filesystem::path& dir);
 
 struct ViewResult {

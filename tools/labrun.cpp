@@ -5,6 +5,11 @@
 //
 //   labrun --update-references [--labs 01,15] [--views NAME,...] [--refs DIR] [--env NAME=VALUE]...
 //   labrun --check-references  [--bin DIR] [--refs DIR]
+//   labrun --compare-builds OTHER_BIN [--bin DIR] [--labs 01,15] [--views NAME,...]
+//
+// --compare-builds renders every view with DIR's programs and with OTHER_BIN's
+// and fails on any byte that differs: CI runs it between the EGL build and an
+// OSMesa build (.ci/run), which must draw the same frames (docs/platform.md).
 //
 // An error view (harness/lab.h View::expect_error; --list-views prints
 // "name expect_error") has no reference image: --update-references skips it
@@ -16,6 +21,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -27,6 +34,8 @@
 #include <vector>
 
 #include "files/files.h"
+#include "image/image.h"
+#include "image/pam.h"
 #include "option_names.h"
 #include "process.h"
 
@@ -66,8 +75,9 @@ struct Settings {
   std::vector<std::string> labs;  // empty: all
   std::set<std::string> views;    // empty: all
   fs::path bin, refs;
+  fs::path other_bin;  // --compare-builds
   std::vector<std::string> env;
-  bool update = false, check = false, help = false;
+  bool update = false, check = false, compare = false, help = false;
 };
 
 struct UsageError : std::runtime_error {
@@ -142,27 +152,32 @@ Settings parse(int argc, char** argv) {
       s.env.push_back(e);
     } else if (a == "--update-references") s.update = true;
     else if (a == "--check-references") s.check = true;
+    else if (a == "--compare-builds") s.compare = true, s.other_bin = value();
     else if (a == "--help" || a == "-h") {
       s.help = true;
       std::puts(
           "usage: labrun --update-references [--labs 01,15] [--views NAME,...] [--refs DIR]\n"
           "              [--env NAME=VALUE]...\n"
-          "       labrun --check-references [--bin DIR] [--refs DIR]\n\n"
-          "  --update-references  render every view of the labs with build/bin/<lab>_headless\n"
+          "       labrun --check-references [--bin DIR] [--refs DIR]\n"
+          "       labrun --compare-builds OTHER_BIN [--bin DIR] [--labs 01,15] [--views NAME,...]\n\n"
+          "  --update-references  render every view of the labs with build/bin/<lab> --headless\n"
           "                       into the reference folder and rewrite its MANIFEST\n"
           "  --check-references   fail when a view has no reference or a reference no view\n"
+          "  --compare-builds     render every view with DIR's programs and OTHER_BIN's (say,\n"
+          "                       the EGL and the OSMesa build) and fail on any differing byte\n"
           "  --env NAME=VALUE     set for the renderer\n\n"
           "To grade renders against the references: labgrade (./lab run, ./lab grade).\n"
           "Exit status: 0 done, 1 a reference missing or stray, 2 usage or input error.");
       return s;
     } else throw UsageError("unknown option '" + a + "' (try --help)");
   }
-  if (!s.update && !s.check) throw UsageError("give --update-references or --check-references (try --help)");
+  if (s.update + s.check + s.compare != 1)
+    throw UsageError("give one of --update-references, --check-references, --compare-builds (try --help)");
   if (s.labs.empty()) s.labs = all_labs();
   return s;
 }
 
-fs::path renderer_of(const Settings& s, const std::string& lab) { return s.bin / (lab + "_headless"); }
+fs::path renderer_of(const Settings& s, const std::string& lab) { return s.bin / lab; }
 
 // One line of --list-views: "name", then optionally "expect_error" for an
 // error view (harness/lab.h kErrorView: headless it exits 1, it has no
@@ -260,6 +275,97 @@ std::string installed_version(const std::string& package) {
   return r.exit_status == 0 && !r.out.empty() ? r.out : "unknown";
 }
 
+std::string mesa_package(const std::string& renderer_info) {
+  const std::string package =
+      renderer_info.find("backend: OSMesa") != std::string::npos ? "libosmesa6" : "libgl1-mesa-dri";
+  return package + " " + installed_version(package);
+}
+
+// What one program draws for the views: the PAM frames of the drawn views
+// (one run, --views), and each error view's line.
+struct Drawn {
+  std::string frames;
+  std::vector<std::string> error_lines;
+};
+
+Drawn draw_views(const fs::path& program, const std::vector<ViewEntry>& views) {
+  Drawn d;
+  std::string list;
+  for (const ViewEntry& v : views) {
+    if (!v.expect_error) {
+      list += (list.empty() ? "" : ",") + v.name;
+      continue;
+    }
+    const gllab::ProcessResult r = run_renderer({program.string(), "--headless", "--view", v.name, "--out", "-"});
+    if (r.exit_status != 1) throw UsageError(program.string() + " " + v.name + ": an error view must exit 1");
+    d.error_lines.push_back(gllab::first_line(r.err));
+  }
+  if (list.empty()) return d;
+  const gllab::ProcessResult r = run_renderer({program.string(), "--headless", "--views", list, "--out", "-"});
+  if (r.exit_status != 0) throw UsageError(program.string() + ": " + gllab::first_line(r.err));
+  d.frames = r.out;
+  return d;
+}
+
+// The frames of one PAM stream (image/pam.h), one per drawn view.
+std::vector<gllab::Image> split_frames(const std::string& stream, const std::string& source) {
+  std::vector<gllab::Image> frames;
+  for (std::size_t at = 0; at < stream.size();) frames.push_back(gllab::decode_pam_at(stream, at, source));
+  return frames;
+}
+
+int compare_builds(const Settings& s) {
+  Settings other = s;
+  other.bin = s.other_bin;
+  const auto backend = [&](const Settings& b) {
+    const gllab::ProcessResult info =
+        run_renderer({renderer_of(b, s.labs.front()).string(), "--headless", "--info"});
+    if (info.exit_status != 0) throw UsageError(b.bin.string() + ": --info failed: " + gllab::first_line(info.err));
+    const std::string line = info.out.substr(0, info.out.find('\n'));
+    return line.rfind("backend: ", 0) == 0 ? line.substr(9) : line;
+  };
+  std::printf("comparing %s (%s) with %s (%s)\n", s.bin.c_str(), backend(s).c_str(), other.bin.c_str(),
+              backend(other).c_str());
+  int views = 0, differ = 0;
+  for (const std::string& lab : s.labs) {
+    const std::vector<ViewEntry> entries = views_of(s, lab);
+    const Drawn a = draw_views(renderer_of(s, lab), entries);
+    const Drawn b = draw_views(renderer_of(other, lab), entries);
+    const std::vector<gllab::Image> fa = split_frames(a.frames, renderer_of(s, lab).string());
+    const std::vector<gllab::Image> fb = split_frames(b.frames, renderer_of(other, lab).string());
+    std::size_t frame = 0, error = 0;
+    for (const ViewEntry& v : entries) {
+      ++views;
+      std::string why;
+      if (v.expect_error) {
+        if (a.error_lines[error] != b.error_lines[error])
+          why = "error lines differ: \"" + a.error_lines[error] + "\" and \"" + b.error_lines[error] + "\"";
+        ++error;
+      } else {
+        if (frame >= fa.size() || frame >= fb.size()) why = "a frame is missing";
+        else if (fa[frame].width != fb[frame].width || fa[frame].height != fb[frame].height)
+          why = "the sizes differ";
+        else if (fa[frame].rgba != fb[frame].rgba) {
+          const std::vector<std::uint8_t>&x = fa[frame].rgba, &y = fb[frame].rgba;
+          std::size_t bytes = 0;
+          int most = 0;
+          for (std::size_t i = 0; i < x.size(); ++i)
+            if (x[i] != y[i]) ++bytes, most = std::max(most, std::abs(int(x[i]) - int(y[i])));
+          why = std::to_string(bytes) + " of " + std::to_string(x.size()) + " bytes differ (by up to " +
+                std::to_string(most) + ")";
+        }
+        ++frame;
+      }
+      if (!why.empty()) {
+        ++differ;
+        std::printf("DIFFERS %s %s: %s\n", lab.c_str(), v.name.c_str(), why.c_str());
+      }
+    }
+  }
+  std::printf("%d views of %zu labs: %d byte-identical, %d differ\n", views, s.labs.size(), views - differ, differ);
+  return differ ? 1 : 0;
+}
+
 int update_references(const Settings& s) {
   fs::create_directories(s.refs);
   std::string renderer_info;
@@ -267,7 +373,7 @@ int update_references(const Settings& s) {
   for (const std::string& lab : s.labs) {
     if (renderer_info.empty()) {
       const gllab::ProcessResult info =
-          run_renderer({renderer_of(s, lab).string(), "--info"}, s.env);
+          run_renderer({renderer_of(s, lab).string(), "--headless", "--info"}, s.env);
       if (info.exit_status != 0) throw UsageError(lab + ": --info failed: " + gllab::first_line(info.err));
       renderer_info = info.out;
     }
@@ -276,7 +382,7 @@ int update_references(const Settings& s) {
       if (entry.expect_error) {
         // Its reference is the one line it must refuse with.
         const gllab::ProcessResult r =
-            run_renderer({renderer_of(s, lab).string(), "--view", view, "--out", "-"}, s.env);
+            run_renderer({renderer_of(s, lab).string(), "--headless", "--view", view, "--out", "-"}, s.env);
         if (r.exit_status != 1 || !r.out.empty())
           throw UsageError(lab + " " + view + ": an error view must exit 1 and draw nothing (exit " +
                            std::to_string(r.exit_status) + ")");
@@ -288,7 +394,7 @@ int update_references(const Settings& s) {
       const fs::path target = s.refs / reference_name(lab, view);
       const fs::path text = s.refs / (lab + "__" + view + ".txt");
       const gllab::ProcessResult r =
-          run_renderer({renderer_of(s, lab).string(), "--view", view, "--out", target.string(),
+          run_renderer({renderer_of(s, lab).string(), "--headless", "--view", view, "--out", target.string(),
                         "--text-out", text.string()},
                        s.env);
       if (r.exit_status != 0) throw UsageError(lab + " " + view + ": " + gllab::first_line(r.err));
@@ -317,7 +423,8 @@ int update_references(const Settings& s) {
     << "# agree: words exactly, numbers within text_relative_tolerance (and any two\n"
     << "# under text_absolute_tolerance). An error view has <view>.error: its line.\n"
     << renderer_info
-    << "mesa_package: libosmesa6 " << installed_version("libosmesa6") << "\n"
+    // The package that holds the renderer: OSMesa's own llvmpipe, or the DRI driver EGL loads.
+    << "mesa_package: " << mesa_package(renderer_info) << "\n"
     << "glu_package: libglu1-mesa " << installed_version("libglu1-mesa") << "\n"
     << "size: 512x512\n";
   for (const ProfileLimits& p : kProfiles)
@@ -338,7 +445,10 @@ int update_references(const Settings& s) {
 int main(int argc, char** argv) {
   try {
     const Settings s = parse(argc, argv);
-    const int status = s.help ? 0 : s.update ? update_references(s) : check_references(s);
+    const int status = s.help      ? 0
+                       : s.update  ? update_references(s)
+                       : s.compare ? compare_builds(s)
+                                   : check_references(s);
     gllab::files::finish_stdout();
     return status;
   } catch (const std::exception& e) {

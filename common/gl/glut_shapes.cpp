@@ -37,4 +37,11 @@ std::string glut_call_text(GlutShape shape, bool solid) {
   return glut_call_text(a.name, solid, a.args, a.count);
 }
 
+namespace {
+FreeglutShapes g_freeglut;  // set once by the window runner, after glutInit
+}  // namespace
+
+void set_freeglut_shapes(const FreeglutShapes& drawers) { g_freeglut = drawers; }
+const FreeglutShapes& freeglut_shapes() { return g_freeglut; }
+
 }  // namespace gllab

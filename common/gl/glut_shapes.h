@@ -1,14 +1,15 @@
-// common/gl/glut_shapes.h — freeglut's glutSolid*/glutWire* shapes, in both
-// runners.
+// common/gl/glut_shapes.h — freeglut's glutSolid*/glutWire* shapes, in a window
+// and headless.
 //
-// Lab code is compiled once and linked into a window program (freeglut) and a
-// headless program (OSMesa, no freeglut: glutInit needs an X display, and
-// without it every glutSolid* call exits with "called without first calling
-// 'glutInit'"). So labs draw glut shapes through this header:
-//   window:   the real freeglut call (glut_shapes_window.cpp)
+// One lab program opens a window (freeglut) or renders headless (no freeglut:
+// glutInit needs an X display, and without it every glutSolid* call exits with
+// "called without first calling 'glutInit'"; EGL changes nothing there). So labs
+// draw glut shapes through this header:
+//   window:   the real freeglut call (glut_shapes_window.cpp), switched on by
+//             the window runner after glutInit (use_freeglut_shapes)
 //   headless: the same GL calls with the same arrays, replayed from what
 //             freeglut itself sent, recorded by tools/glut_record
-//             (glut_shapes_headless.cpp)
+//             (glut_shapes_replay.cpp)
 // Only recorded argument sets can be replayed; any other reports a frame error
 // that names the call and the recorded sets.
 #pragma once
@@ -48,5 +49,19 @@ void draw_glut_shape(GlutShape shape, bool solid);
 /// glutSolidSphere/glutWireSphere(radius 1, slices, stacks) for comparing with
 /// gluSphere. Recorded for stacks = 2..24 with slices = 2 * stacks.
 void draw_glut_sphere(int slices, int stacks, bool solid);
+
+/// The window runner calls this right after glutInit: from then on the
+/// shapes are freeglut's own calls. Until then (always, headless) they are
+/// replayed.
+void use_freeglut_shapes();
+
+/// Where use_freeglut_shapes leaves freeglut's drawing functions (both null
+/// until it is called; glut_shapes.cpp keeps them, so the replay needs no freeglut).
+struct FreeglutShapes {
+  void (*shape)(GlutShape shape, bool solid) = nullptr;
+  void (*sphere)(int slices, int stacks, bool solid) = nullptr;
+};
+void set_freeglut_shapes(const FreeglutShapes& drawers);
+const FreeglutShapes& freeglut_shapes();
 
 }  // namespace gllab

@@ -1,4 +1,5 @@
-// common/gl/glut_shapes_window.cpp — the window programs call freeglut itself.
+// common/gl/glut_shapes_window.cpp — in a window the labs' glut shapes are freeglut's
+// own calls (use_freeglut_shapes, after glutInit).
 #include <GL/freeglut.h>
 
 #include "gl/glut_shapes.h"
@@ -6,7 +7,9 @@
 
 namespace gllab {
 
-void draw_glut_shape(GlutShape shape, bool solid) {
+namespace {
+
+void freeglut_shape(GlutShape shape, bool solid) {
   // Keep the GlutArgs alive: glut_args(shape).args would point into a
   // temporary that is gone before the switch reads it.
   const GlutArgs args = glut_args(shape);
@@ -30,8 +33,12 @@ void draw_glut_shape(GlutShape shape, bool solid) {
   }
 }
 
-void draw_glut_sphere(int slices, int stacks, bool solid) {
+void freeglut_sphere(int slices, int stacks, bool solid) {
   solid ? glutSolidSphere(1.0, slices, stacks) : glutWireSphere(1.0, slices, stacks);
 }
+
+}  // namespace
+
+void use_freeglut_shapes() { set_freeglut_shapes({freeglut_shape, freeglut_sphere}); }
 
 }  // namespace gllab

@@ -1,4 +1,5 @@
-// common/harness/headless_main.cpp — <lab>_headless: one view to PNG, no display.
+// common/harness/headless_main.cpp — <lab> --headless: one view to PNG, no display
+// (the context is harness/offscreen.h: EGL surfaceless or OSMesa).
 //
 // Exit status: 0 written; 1 GL or GLU error, context failure or unwritable
 // file; 2 bad command line. Every failure is one line on stderr.
@@ -17,12 +18,13 @@
 #include "harness/lab.h"
 #include "harness/offscreen.h"
 #include "harness/options.h"
+#include "harness/runners.h"
 #include "files/files.h"
 #include "image/image.h"
 #include "image/pam.h"
 #include "io/spline_json.h"
 
-int main(int argc, char** argv) {
+int gllab::run_headless(int argc, char** argv) {
   const std::string program = gllab::program_name(argv[0]);
   auto fail = [&](int status, const std::string& message) {
     std::fprintf(stderr, "%s: %s\n", program.c_str(), message.c_str());
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
       options = gllab::parse_options(std::vector<std::string>(argv + 1, argv + argc),
                                      gllab::Runner::kHeadless);
       if (options.help) {
-        std::fputs(gllab::usage_text(lab, program, gllab::Runner::kHeadless).c_str(), stdout);
+        std::fputs(gllab::usage_text(lab, program).c_str(), stdout);
         gllab::files::finish_stdout();  // a full disk or a closed pipe: exit 1, one line
         return 0;
       }
@@ -54,7 +56,8 @@ int main(int argc, char** argv) {
     const gllab::State& state = *parsed;
     gllab::OffscreenContext context(state.width, state.height);
     if (options.info) {
-      std::printf("renderer: %s\ngl_version: %s\nglu_version: %s\n", context.renderer().c_str(),
+      std::printf("backend: %s\nrenderer: %s\ngl_version: %s\nglu_version: %s\n", context.backend().c_str(),
+                  context.renderer().c_str(),
                   reinterpret_cast<const char*>(glGetString(GL_VERSION)),
                   reinterpret_cast<const char*>(gluGetString(GLU_VERSION)));
       gllab::files::finish_stdout();

@@ -1,9 +1,12 @@
 // common/harness/offscreen.h — a GL context without a display.
 //
-// The one implementation today is OSMesa (offscreen_osmesa.cpp), the
-// reference renderer. OSMesa was removed from Mesa 25.1; its successor, EGL
-// surfaceless, fits behind this same interface (docs/platform.md,
-// "After OSMesa: EGL surfaceless", has what a port needs, measured).
+// Two implementations; a build links one (CMake's GLLAB_HEADLESS):
+//  - EGL surfaceless (offscreen_egl.cpp), the default: it links through GLVND,
+//    so the same lab program also opens a window; Mesa 25.1 and later have
+//    only this one.
+//  - OSMesa (offscreen_osmesa.cpp), the reference renderer that MANIFEST names,
+//    up to Mesa 25.0; a program linking it has no window (docs/platform.md).
+// Their frames are byte-identical for every view (.ci/run checks it).
 #pragma once
 
 #include <memory>
@@ -23,6 +26,7 @@ class OffscreenContext {
   OffscreenContext(const OffscreenContext&) = delete;
   OffscreenContext& operator=(const OffscreenContext&) = delete;
 
+  std::string backend() const;   // "EGL surfaceless" or "OSMesa"
   std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   /// The frame as a top-down image (glReadPixels rows are bottom-up).
   Image read_pixels() const;

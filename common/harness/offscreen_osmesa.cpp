@@ -66,6 +66,8 @@ OffscreenContext::~OffscreenContext() {
   }
 }
 
+std::string OffscreenContext::backend() const { return "OSMesa"; }
+
 std::string OffscreenContext::renderer() const {
   const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return r ? r : "";

@@ -35,9 +35,36 @@ void parse_size(const std::string& text, int& width, int& height) {
   height = parse_dimension(text.substr(x + 1), text);
 }
 
+namespace {
+
+// The options of the two runners. Those that take a value list it here too.
+const std::vector<std::string> kHeadlessOnly = {"--headless", "--out",        "--views",
+                                                "--info",     "--print-text", "--text-out"};
+const std::vector<std::string> kWindowOnly = {"--capture", "--capture-views", "--capture-at-exit",
+                                              "--frames"};
+const std::vector<std::string> kTakesValue = {
+    "--view",    "--views",         "--size",            "--out",    "--set",    "--load",
+    "--capture", "--capture-views", "--capture-at-exit", "--frames", "--camera", "--time",
+    "--text-out"};
+
+bool one_of(const std::string& a, const std::vector<std::string>& list) {
+  return std::find(list.begin(), list.end(), a) != list.end();
+}
+
+}  // namespace
+
+Runner runner_for(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (one_of(args[i], kHeadlessOnly)) return Runner::kHeadless;
+    if (one_of(args[i], kTakesValue)) ++i;  // its value is not an option
+  }
+  return Runner::kWindow;
+}
+
 Options parse_options(const std::vector<std::string>& args, Runner runner) {
   Options o;
-  const std::string out_flag = runner == Runner::kHeadless ? "--out" : "--capture";
+  const bool headless = runner == Runner::kHeadless;
+  const std::string out_flag = headless ? "--out" : "--capture";
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
@@ -46,8 +73,14 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
       if (args[i + 1].empty()) throw UsageError(a + " '' is empty (" + a + " needs a value)");
       return args[++i];
     };
+    // An option of the other runner: say which way it runs.
+    if (headless && one_of(a, kWindowOnly))
+      throw UsageError(a + " is a window option; it does not go with --headless or --out");
+    if (!headless && one_of(a, kHeadlessOnly))
+      throw UsageError(a + " renders headless; it does not go with window options");
     if (a == "--view") o.view = value();
-    else if (a == "--views" && runner == Runner::kHeadless) {
+    else if (a == "--headless") continue;  // runner_for chose the runner
+    else if (a == "--views") {
       std::stringstream list(value());
       for (std::string v; std::getline(list, v, ',');)
         if (!v.empty()) o.views.push_back(v);
@@ -57,9 +90,9 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
     else if (a == out_flag) o.out = value();
     else if (a == "--set") o.sets.push_back(value());
     else if (a == "--load") o.load = value();
-    else if (a == "--capture-views" && runner == Runner::kWindow) o.capture_views = value();
-    else if (a == "--capture-at-exit" && runner == Runner::kWindow) o.capture_at_exit = value();
-    else if (a == "--frames" && runner == Runner::kWindow) {
+    else if (a == "--capture-views") o.capture_views = value();
+    else if (a == "--capture-at-exit") o.capture_at_exit = value();
+    else if (a == "--frames") {
       const std::string& n = value();
       char* end = nullptr;
       const long frames = std::strtol(n.c_str(), &end, 10);
@@ -78,9 +111,9 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
         throw UsageError("malformed --time '" + t + "' (expected seconds >= 0)");
     } else if (a == "--overlay") o.overlay = true;
     else if (a == "--list-views") o.list_views = true;
-    else if (a == "--info" && runner == Runner::kHeadless) o.info = true;
-    else if (a == "--print-text" && runner == Runner::kHeadless) o.print_text = true;
-    else if (a == "--text-out" && runner == Runner::kHeadless) o.text_out = value();
+    else if (a == "--info") o.info = true;
+    else if (a == "--print-text") o.print_text = true;
+    else if (a == "--text-out") o.text_out = value();
     else if (a == "--help" || a == "-h") o.help = true;
     else throw UsageError("unknown option '" + a + "' (try --help)");
   }
@@ -145,32 +178,28 @@ std::string list_views_text(const Lab& lab) {
   return text;
 }
 
-std::string usage_text(const Lab& lab, const std::string& program, Runner runner) {
+std::string usage_text(const Lab& lab, const std::string& program) {
   std::ostringstream out;
-  const bool headless = runner == Runner::kHeadless;
-  out << lab.title << "\n\n";
-  if (headless) {
-    out << "usage: " << program << " --out FILE.png [--view NAME] [--size WxH] [--set key=value]...\n"
-        << "       " << program << " --list-views | --info | --help\n\n"
-        << "Renders one view of the lab without a display (OSMesa) and writes a PNG\n"
-        << "(--out - writes the raw frame to stdout as PAM, for graders; --views a,b,c with\n"
-        << "--out - renders several views in one run, one PAM each).\n"
-        << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n"
-        << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n"
-        << "--text-out FILE writes it to FILE instead, for every view: a line \"== VIEW N\", then\n"
-        << "its N lines (graders compare it with reference_images/<lab>__<view>.txt).\n\n";
-  } else {
-    out << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
-        << "       " << program << " --list-views | --help\n\n"
-        << "Opens the lab in a window (freeglut). Without a display, render headless:\n"
-        << "  " << program << "_headless --view NAME --out FILE.png\n"
-        << "--capture draws the first frame, writes it as PNG and exits (window smoke test);\n"
-        << "--capture-views DIR does so for every view, as DIR/<lab>__<view>.png (graders\n"
-        << "compare window and headless renders); --capture-at-exit FILE writes the last\n"
-        << "frame shown when the window closes (scripted tests); --frames N draws the view\n"
-        << "N more times after the first, prints the time per frame and exits (the figures\n"
-        << "of the labs' READMEs).\n\n";
-  }
+  out << lab.title << "\n\n"
+      << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
+      << "       " << program
+      << " --headless --out FILE.png [--view NAME] [--size WxH] [--set key=value]...\n"
+      << "       " << program << " --list-views | --info | --help\n\n"
+      << "Without --headless it opens the lab in a window (freeglut). --capture draws the\n"
+      << "first frame, writes it as PNG and exits (window smoke test); --capture-views DIR\n"
+      << "does so for every view, as DIR/<lab>__<view>.png (graders compare window and\n"
+      << "headless renders); --capture-at-exit FILE writes the last frame shown when the\n"
+      << "window closes (scripted tests); --frames N draws the view N more times after the\n"
+      << "first, prints the time per frame and exits (the figures of the labs' READMEs).\n\n"
+      << "--headless renders one view without a display and writes a PNG; --out, --views,\n"
+      << "--info, --print-text and --text-out imply it. --out - writes the raw frame to\n"
+      << "stdout as PAM, for graders; --views a,b,c with --out - renders several views in\n"
+      << "one run, one PAM each. --info prints the backend (EGL or OSMesa), the renderer\n"
+      << "and the versions.\n"
+      << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n"
+      << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n"
+      << "--text-out FILE writes it to FILE instead, for every view: a line \"== VIEW N\", then\n"
+      << "its N lines (graders compare it with reference_images/<lab>__<view>.txt).\n\n";
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"
       << "  --size WxH        framebuffer size in pixels (default 512x512)\n"
@@ -201,19 +230,18 @@ std::string usage_text(const Lab& lab, const std::string& program, Runner runner
                          l.what);
     out << columns(lists, 26);
   }
-  if (!headless) {
-    out << "\nkeys:\n  v / V   next / previous view\n  h       help overlay\n"
-        << "  p       print the command that renders this state headless\n";
-    if (lab.model) out << "  Ctrl+S  save the " << model_noun(lab)
-                       << " as <lab>__<view>.json and print the command that renders it\n";
-    out << "  Esc     quit\n";
-    for (const Key& k : lab.keys) out << "  " << k.key << "       " << k.what << '\n';
-    const bool orbit = std::any_of(lab.views.begin(), lab.views.end(), [](const View& v) { return v.orbit(); });
-    if (orbit) out << "  0       reset the camera of a 3D view\n";
-    if (!lab.points.empty() || orbit) out << "\nmouse:\n";
-    if (!lab.points.empty()) out << "  drag a point with the left button (its coordinates show while it moves)\n";
-    if (orbit) out << "  3D views: drag with the right button to turn, the wheel zooms\n";
-  }
+  // The window's keys and mouse.
+  out << "\nkeys:\n  v / V   next / previous view\n  h       help overlay\n"
+      << "  p       print the command that renders this state headless\n";
+  if (lab.model) out << "  Ctrl+S  save the " << model_noun(lab)
+                     << " as <lab>__<view>.json and print the command that renders it\n";
+  out << "  Esc     quit\n";
+  for (const Key& k : lab.keys) out << "  " << k.key << "       " << k.what << '\n';
+  const bool orbit = std::any_of(lab.views.begin(), lab.views.end(), [](const View& v) { return v.orbit(); });
+  if (orbit) out << "  0       reset the camera of a 3D view\n";
+  if (!lab.points.empty() || orbit) out << "\nmouse:\n";
+  if (!lab.points.empty()) out << "  drag a point with the left button (its coordinates show while it moves)\n";
+  if (orbit) out << "  3D views: drag with the right button to turn, the wheel zooms\n";
   return out.str();
 }
 

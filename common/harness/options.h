@@ -14,6 +14,8 @@ struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// One program per lab runs in one of two ways: a freeglut window, or headless
+/// (no display: one frame to PNG, harness/offscreen.h).
 enum class Runner { kWindow, kHeadless };
 
 struct Options {
@@ -39,7 +41,13 @@ struct Options {
 inline constexpr int kMaxSize = 8192;
 inline constexpr int kMaxFrames = 100000;
 
-/// Parses argv (without argv[0]). Throws UsageError naming the bad argument.
+/// Which way these arguments (argv without argv[0]) ask the lab to run:
+/// headless when one of them is --headless or an option only headless takes
+/// (--out, --views, --info, --print-text, --text-out); the window otherwise.
+/// The values of options are skipped (--set out=1 is not --out).
+Runner runner_for(const std::vector<std::string>& args);
+/// Parses argv (without argv[0]) for that runner. Throws UsageError naming the
+/// bad argument; an option of the other runner is named as such.
 Options parse_options(const std::vector<std::string>& args, Runner runner);
 /// Parses "WxH" with 1 <= W, H <= kMaxSize. Throws UsageError.
 void parse_size(const std::string& text, int& width, int& height);
@@ -48,14 +56,15 @@ void parse_size(const std::string& text, int& width, int& height);
 /// Throws UsageError (a bad file too: it is input).
 State make_state(const Lab& lab, const Options& options);
 
-std::string usage_text(const Lab& lab, const std::string& program, Runner runner);
+/// --help: both ways of running the lab, its options, views, parameters and keys.
+std::string usage_text(const Lab& lab, const std::string& program);
 std::string views_text(const Lab& lab);
 /// What --list-views prints: one view name per line, an error view's name
 /// followed by " expect_error" (kErrorView; labrun reads it), a view that
 /// equals another on purpose by " same_as=OTHER" (View::same_as).
 std::string list_views_text(const Lab& lab);
 
-/// "01_immediate_mode" from a path like "build/bin/01_immediate_mode_headless".
+/// "01_immediate_mode" from a path like "build/bin/01_immediate_mode".
 std::string program_name(const char* argv0);
 
 }  // namespace gllab

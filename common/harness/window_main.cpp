@@ -1,4 +1,4 @@
-// common/harness/window_main.cpp — <lab>: the lab in a freeglut window.
+// common/harness/window_main.cpp — <lab> without --headless: the lab in a freeglut window.
 //
 // Keys of the runner: [v]/[V] view, [h] help overlay, [p] print the headless
 // command for what is on screen, [Ctrl+S] save the lab's curve or surface
@@ -24,12 +24,14 @@
 #include "files/files.h"
 #include "gl/check.h"
 #include "gl/gl.h"
+#include "gl/glut_shapes.h"
 #include "gl/pick.h"
 #include "gl/text.h"
 #include "harness/frame.h"
 #include "harness/lab.h"
 #include "harness/model_file.h"
 #include "harness/options.h"
+#include "harness/runners.h"
 #include "image/image.h"
 
 namespace {
@@ -310,7 +312,7 @@ void tick(int) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int gllab::run_window(int argc, char** argv) {
   const std::string program = gllab::program_name(argv[0]);
   auto fail = [&](int status, const std::string& message) {
     std::fprintf(stderr, "%s: %s\n", program.c_str(), message.c_str());
@@ -325,7 +327,7 @@ int main(int argc, char** argv) {
     const gllab::Options options = gllab::parse_options(
         std::vector<std::string>(argv + 1, argv + argc), gllab::Runner::kWindow);
     if (options.help) {
-      std::fputs(gllab::usage_text(window.lab, program, gllab::Runner::kWindow).c_str(), stdout);
+      std::fputs(gllab::usage_text(window.lab, program).c_str(), stdout);
       gllab::files::finish_stdout();  // a full disk or a closed pipe: exit 1, one line
       return 0;
     }
@@ -358,12 +360,13 @@ int main(int argc, char** argv) {
     return fail(2, "cannot open a window: no X display (DISPLAY='" +
                        std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") +
                        "'); render headless instead: build/bin/" + window.lab.id +
-                       "_headless --view " + window.state->view() + " --out " +
+                       " --headless --view " + window.state->view() + " --out " +
                        window.state->view() + ".png (or run under xvfb-run -a)");
   }
 
   int glut_argc = 1;  // our options are parsed already; GLUT sees none of them
   glutInit(&glut_argc, argv);
+  gllab::use_freeglut_shapes();  // freeglut is initialised: its own glutSolid* from now on
   // A stencil buffer too: lab 33's CSG counts surfaces in it (8 bits on llvmpipe).
   glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH | GLUT_STENCIL);
   glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);

@@ -1,5 +1,5 @@
 // tests/gl/glut_shapes_test.cpp — the headless glut shapes
-// (common/gl/glut_shapes_headless.cpp) draw exactly what freeglut draws.
+// (common/gl/glut_shapes_replay.cpp) draw exactly what freeglut draws.
 //
 // Origins of the expectations:
 // - freeglut itself: each recorded call is drawn with real freeglut in a
@@ -25,7 +25,7 @@ using gllab::testing::kSourceDir;
 using gllab::testing::ScratchDir;
 
 const std::string kWindowLab = GLLAB_GLUT_SHAPES_LAB;
-const std::string kHeadlessLab = GLLAB_GLUT_SHAPES_LAB_HEADLESS;
+const std::string kHeadlessLab = GLLAB_GLUT_SHAPES_LAB;  // run with --out: headless, the replay
 const std::string kReplayWindowLab = GLLAB_GLUT_SHAPES_LAB_REPLAY_WINDOW;
 const std::string kRecorder = GLLAB_GLUT_RECORD;
 const std::vector<std::string> kXvfbRun = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24"};

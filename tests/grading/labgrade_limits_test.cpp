@@ -120,7 +120,7 @@ TEST(LabgradeLimits, AFractionalTimeoutIsReportedAsGiven) {
   ScratchDir build("build"), refs("refs");
   fs::copy_file(kRefs / "MANIFEST", refs / "MANIFEST");
   fs::copy_file(kRefs / (kLab + "__default.png"), refs / "93_hang__default.png");
-  write_fake_renderer(build / "93_hang_headless", "exec sleep 30");
+  write_fake_renderer(build / "93_hang", "exec sleep 30");
   const ProcessResult r = grade({"--build", build.path().string(), "--refs", refs.path().string(),
                                  "--timeout", "0.5", "--out", (build / "out").string()});
   EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
@@ -179,9 +179,9 @@ TEST(LabgradeLimits, ARendererThatWritesWithoutEndIsKilledAndFailsItsView) {
   fs::copy_file(kRefs / "MANIFEST", refs / "MANIFEST");
   for (const char* lab : {"95_stdout", "96_stderr", "97_orphan"})
     fs::copy_file(kRefs / (kLab + "__default.png"), refs / (std::string(lab) + "__default.png"));
-  write_fake_renderer(build / "95_stdout_headless", "exec cat /dev/zero");
-  write_fake_renderer(build / "96_stderr_headless", "exec cat /dev/zero >&2");
-  write_fake_renderer(build / "97_orphan_headless", "sleep 30 &\nexec cat /dev/zero");
+  write_fake_renderer(build / "95_stdout", "exec cat /dev/zero");
+  write_fake_renderer(build / "96_stderr", "exec cat /dev/zero >&2");
+  write_fake_renderer(build / "97_orphan", "sleep 30 &\nexec cat /dev/zero");
   const auto start = std::chrono::steady_clock::now();
   const ProcessResult r = grade({"--build", build.path().string(), "--refs", refs.path().string(),
                                  "--jobs", "1", "--out", (build / "out").string()});
@@ -206,9 +206,9 @@ TEST(LabgradeLimits, ARendererThatWritesWithoutEndIsKilledAndFailsItsView) {
 struct MarkingBuild {
   ScratchDir dir{"build"};
   MarkingBuild() {
-    write_fake_renderer(dir / (kLab + "_headless"),
+    write_fake_renderer(dir / kLab,
                         "touch " + (dir / "rendered").string() + "\nexec " +
-                            (kBinDir / (kLab + "_headless")).string() + " \"$@\"");
+                            (kBinDir / kLab).string() + " \"$@\"");
   }
   bool rendered() const { return fs::exists(dir / "rendered"); }
 };

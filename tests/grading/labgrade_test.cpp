@@ -126,17 +126,17 @@ TEST(Labgrade, GlErrorCrashHangAndMissingRendererAreFailingRowsWithTheReason) {
   fs::copy_file(kRefs / "MANIFEST", refs / "MANIFEST");
   for (const char* lab : {"91_gl_error", "92_crash", "93_hang", "94_missing"})
     fs::copy_file(kRefs / (kLab + "__default.png"), refs / (std::string(lab) + "__default.png"));
-  write_fake_renderer(build / "91_gl_error_headless",
+  write_fake_renderer(build / "91_gl_error",
                       "exec " + gllab::testing::kFixtureLab.string() + " --set gl_error=1 \"$@\"");
-  write_fake_renderer(build / "92_crash_headless", "kill -SEGV $$");
-  write_fake_renderer(build / "93_hang_headless", "exec sleep 30");
+  write_fake_renderer(build / "92_crash", "kill -SEGV $$");
+  write_fake_renderer(build / "93_hang", "exec sleep 30");
   const gllab::ProcessResult r = grade(
       {"--build", build.path().string(), "--refs", refs.path().string(), "--timeout", "1", "--out", (build / "out").string()});
   EXPECT_EQ(r.exit_status, kSomeFailed) << r.out << r.err;
   EXPECT_NE(r.out.find("GL_INVALID_ENUM"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("crashed (signal 11)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("the render took longer than 1 s (killed)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("no renderer 94_missing_headless in " + build.path().string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no program 94_missing in " + build.path().string()), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("4 views: 0 passed, 4 failed; score 0.0%"), std::string::npos) << r.out;
 }
 
@@ -147,9 +147,9 @@ TEST(Labgrade, GlErrorCrashHangAndMissingRendererAreFailingRowsWithTheReason) {
 // picture, and the single runs are right, so every view passes.
 TEST(Labgrade, AViewThatFailsInABatchIsGradedFromItsOwnRender) {
   ScratchDir build("build");
-  const std::string real = (kBinDir / (kLab + "_headless")).string();
-  write_fake_renderer(build / (kLab + "_headless"),
-                      "if [ \"$1\" = --views ]; then exec " + real + " --views default,default,default,default --out -; fi\n"
+  const std::string real = (kBinDir / kLab).string();
+  write_fake_renderer(build / kLab,
+                      "if [ \"$2\" = --views ]; then exec " + real + " --views default,default,default,default --out -; fi\n"
                       "exec " + real + " \"$@\"");
   const gllab::ProcessResult r = grade({"--build", build.path().string(), "--labs", "01", "--quiet"});
   EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
@@ -160,9 +160,9 @@ TEST(Labgrade, AViewThatFailsInABatchIsGradedFromItsOwnRender) {
 // are rendered one by one, each graded on its own.
 TEST(Labgrade, ABatchThatStopsEarlyGradesTheRestOneByOne) {
   ScratchDir build("build");
-  const std::string real = (kBinDir / (kLab + "_headless")).string();
-  write_fake_renderer(build / (kLab + "_headless"),
-                      "if [ \"$1\" = --views ]; then " + real + " --view default --out -; exit 3; fi\n"
+  const std::string real = (kBinDir / kLab).string();
+  write_fake_renderer(build / kLab,
+                      "if [ \"$2\" = --views ]; then " + real + " --view default --out -; exit 3; fi\n"
                       "exec " + real + " \"$@\"");
   const gllab::ProcessResult r = grade({"--build", build.path().string(), "--labs", "01", "--quiet"});
   EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
@@ -257,7 +257,7 @@ TEST(Labgrade, ClassCsvHasARowPerStudentAndAColumnPerLab) {
     submit_view(klass / "anna", v, v);
     if (v != "wireframe") submit_view(klass / "ben", v, v);
   }
-  write_fake_renderer(klass / "carl" / (kLab + "_headless"), "exec " + (kBinDir / (kLab + "_headless")).string() + " \"$@\"");
+  write_fake_renderer(klass / "carl" / kLab, "exec " + (kBinDir / kLab).string() + " \"$@\"");
   const fs::path csv = klass / "grades.csv";
   const gllab::ProcessResult r =
       grade({"--class", klass.path().string(), "--labs", "01", "--csv", csv.string(), "--quiet", "--out", (klass / "out").string()});
@@ -343,9 +343,9 @@ TEST(Labgrade, AnErrorViewPassesABuildOnlyWhenItExitsOneWithItsLine) {
   EXPECT_NE(r.out.find("1 views: 1 passed"), std::string::npos) << r.out;
   // A renderer that draws the default view instead, and one that refuses with another line.
   ScratchDir draws("draws"), other("other");
-  const std::string real = (kBinDir / (lab + "_headless")).string();
-  write_fake_renderer(draws / (lab + "_headless"), "exec " + real + " --view default --out -");
-  write_fake_renderer(other / (lab + "_headless"), "echo 'something else' >&2; exit 1");
+  const std::string real = (kBinDir / lab).string();
+  write_fake_renderer(draws / lab, "exec " + real + " --view default --out -");
+  write_fake_renderer(other / lab, "echo 'something else' >&2; exit 1");
   r = grade({"--build", draws.path().string(), "--labs", "22", "--views", view, "--out", (draws / "out").string()});
   EXPECT_EQ(r.exit_status, kSomeFailed) << r.out;
   EXPECT_NE(r.out.find("drew a picture; it must exit 1"), std::string::npos) << r.out;

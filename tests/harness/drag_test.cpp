@@ -27,8 +27,7 @@ namespace {
 
 using gllab::testing::ScratchDir;
 
-const std::string kDragLab = GLLAB_DRAG_LAB;                    // the window program
-const std::string kDragLabHeadless = GLLAB_DRAG_LAB_HEADLESS;   // the headless one
+const std::string kDragLab = GLLAB_DRAG_LAB;  // one program: a window, or headless with --out
 
 // Runs the window program under Xvfb in `dir` and sends it `actions`
 // (xdotool words after the window is found). Returns what the program printed.
@@ -55,6 +54,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 TEST(Drag, MouseMovesAPointAndPPrintsTheSetLine) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   ScratchDir dir("drag");
   const gllab::ProcessResult r = drive_window(
       dir, "mousemove --window $window " + std::to_string(kP1X) + " " + std::to_string(kP1Y) +
@@ -68,6 +68,7 @@ TEST(Drag, MouseMovesAPointAndPPrintsTheSetLine) {
 }
 
 TEST(Drag, APointOfA3dListMovesParallelToTheScreen) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   // The right half is translated by +1.5 in x and turned by glRotatef(-60, 1,
   // 0, 0): (y, z) -> (y', z') = (c y - s z, s y + c z), c = cos(-60 deg) = 1/2,
   // s = sin(-60 deg). H[1] = (0.5, 0, 0.5) lands at x' = 2, y' = 0.433,
@@ -90,6 +91,7 @@ TEST(Drag, APointOfA3dListMovesParallelToTheScreen) {
 }
 
 TEST(Drag, CtrlSSavesTheCurveAndLoadRendersWhatSetRenders) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   ScratchDir dir("save");
   const gllab::ProcessResult r = drive_window(
       dir, "mousemove --window $window " + std::to_string(kP1X) + " " + std::to_string(kP1Y) +
@@ -104,11 +106,11 @@ TEST(Drag, CtrlSSavesTheCurveAndLoadRendersWhatSetRenders) {
 
   // The printed command's two ways to the same state give the same pixels.
   const auto from_set = dir / "set.png", from_file = dir / "file.png", unmoved = dir / "unmoved.png";
-  ASSERT_EQ(gllab::run_process({kDragLabHeadless, "--set", "P[1]=0.375,1.488", "--out", from_set.string()}).exit_status, 0);
+  ASSERT_EQ(gllab::run_process({kDragLab, "--set", "P[1]=0.375,1.488", "--out", from_set.string()}).exit_status, 0);
   const gllab::ProcessResult load = gllab::run_process(
-      {kDragLabHeadless, "--load", (dir / "drag_lab__default.json").string(), "--out", from_file.string()});
+      {kDragLab, "--load", (dir / "drag_lab__default.json").string(), "--out", from_file.string()});
   ASSERT_EQ(load.exit_status, 0) << load.err;
-  ASSERT_EQ(gllab::run_process({kDragLabHeadless, "--out", unmoved.string()}).exit_status, 0);
+  ASSERT_EQ(gllab::run_process({kDragLab, "--out", unmoved.string()}).exit_status, 0);
   const gllab::Image set_image = gllab::read_png(from_set.string());
   EXPECT_EQ(gllab::compare_images(set_image, gllab::read_png(from_file.string()), 0).differing_pixels, 0);
   // And the drag changed the picture (the comparison can fail).
@@ -158,16 +160,18 @@ void expect_same_pixels_headless(const ScratchDir& dir, const std::string& headl
 }
 
 TEST(Orbit, RightDragAndWheelTurnTheCameraPPrintsItAndHeadlessRendersTheSame) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   ScratchDir dir("orbit");
   const gllab::ProcessResult r =
       drive(kDragLab, "drag lab", dir, {"--view", "box", "--capture-at-exit", "window.png"}, kTurnAndZoom);
   expect_turned(r, "drag_lab", "box");
-  expect_same_pixels_headless(dir, kDragLabHeadless, "box");
+  expect_same_pixels_headless(dir, kDragLab, "box");
 }
 
 // The same with a real lab whose GLU tessellation depends on the matrices
 // (GLU_PATH_LENGTH samples in pixels): the window and the printed command agree.
 TEST(Orbit, ALabsWindowAndItsPrintedCommandShowTheSamePixels) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   const std::string lab = "21_nurbs_surfaces";
   ScratchDir dir("orbit21");
   const gllab::ProcessResult r = drive((gllab::testing::kBinDir / lab).string(), "lab 21", dir,
@@ -178,6 +182,7 @@ TEST(Orbit, ALabsWindowAndItsPrintedCommandShowTheSamePixels) {
 
 // A view without kOrbit ignores the right button and the wheel.
 TEST(Orbit, AFlatViewIgnoresTheRightButton) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   ScratchDir dir("flat");
   const gllab::ProcessResult r = drive(kDragLab, "drag lab", dir, {}, kTurnAndZoom);
   ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
@@ -187,9 +192,9 @@ TEST(Orbit, AFlatViewIgnoresTheRightButton) {
 TEST(Drag, HeadlessRejectsABadPointAssignmentWithOneLine) {
   ScratchDir dir("bad");
   const gllab::ProcessResult r =
-      gllab::run_process({kDragLabHeadless, "--set", "P[7]=1,2", "--out", (dir / "x.png").string()});
+      gllab::run_process({kDragLab, "--set", "P[7]=1,2", "--out", (dir / "x.png").string()});
   EXPECT_EQ(r.exit_status, 2);
-  EXPECT_EQ(r.err, "drag_lab_headless: point P[7] does not exist (P has points 0..2)\n");
+  EXPECT_EQ(r.err, "drag_lab: point P[7] does not exist (P has points 0..2)\n");
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ TEST(HeadlessCli, PrintTextPrintsTheLabelsTheFrameDrew) {
 TEST(HeadlessCli, HelpNamesEveryOption) {
   const gllab::ProcessResult r = run_process({headless(kLab), "--help"});
   EXPECT_EQ(r.exit_status, 0);
-  for (const char* option : {"--view", "--size", "--out", "--set", "--list-views", "--help"})
+  for (const char* option : {"--headless", "--view", "--size", "--out", "--set", "--list-views", "--help"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
@@ -150,7 +150,7 @@ TEST(WindowCli, WithoutADisplayNamesTheHeadlessCommandAndExits2) {
       {(gllab::testing::kBinDir / kLab).string(), "--view", "wireframe"}, {"DISPLAY="});
   EXPECT_EQ(r.exit_status, kUsageStatus);
   EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(kLab + "_headless --view wireframe"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(kLab + " --headless --view wireframe"), std::string::npos) << r.err;
 }
 
 TEST(WindowCli, BadViewIsReportedBeforeOpeningAWindow) {

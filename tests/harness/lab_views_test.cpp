@@ -1,5 +1,5 @@
 // tests/harness/lab_views_test.cpp — one test per lab view, discovered from
-// the programs themselves (<lab>_headless --list-views), so a new view is
+// the programs themselves (<lab> --list-views), so a new view is
 // tested, and needs a reference image, without editing this file.
 #include <gtest/gtest.h>
 
@@ -138,6 +138,7 @@ INSTANTIATE_TEST_SUITE_P(Labs, EveryErrorView, ::testing::ValuesIn(all_views(tru
 class EveryLabWindow : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryLabWindow, EveryViewUnderXvfbEqualsHeadlessRender) {
+  GLLAB_SKIP_WITHOUT_WINDOW();
   ScratchDir dir("window");
   const std::string lab = GetParam();
   // Mesa's GLX driver leaks ~1 MiB per window (valgrind: allocated under

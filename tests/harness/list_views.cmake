@@ -8,7 +8,7 @@
 string(REPLACE "," ";" labs "${LABS}")
 set(text "")
 foreach(lab IN LISTS labs)
-  execute_process(COMMAND ${BIN_DIR}/${lab}_headless --list-views
+  execute_process(COMMAND ${BIN_DIR}/${lab} --list-views
                   OUTPUT_VARIABLE views RESULT_VARIABLE status ERROR_QUIET)
   if(NOT status EQUAL 0)
     string(APPEND text "${lab} LIST_VIEWS_FAILED\n")

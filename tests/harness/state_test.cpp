@@ -2,6 +2,9 @@
 // Expected values follow from the documented contracts in lab.h/options.h.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "harness/lab.h"
 #include "harness/options.h"
 
@@ -86,6 +89,40 @@ TEST(Options, HeadlessNeedsOutUnlessListingOrHelping) {
   EXPECT_NO_THROW(gllab::parse_options({"--view", "default"}, Runner::kWindow));
   EXPECT_THROW(gllab::parse_options({"--out", "x.png"}, Runner::kWindow), gllab::UsageError);
   EXPECT_THROW(gllab::parse_options({"--out", "dir/"}, Runner::kHeadless), gllab::UsageError);
+}
+
+// One program per lab: --headless, or an option only headless takes, picks the
+// headless runner; the value of an option never does (--set out=... is a value).
+TEST(Options, RunnerForPicksHeadlessByItsOptionsNotByValues) {
+  using gllab::Runner;
+  using gllab::runner_for;
+  EXPECT_EQ(runner_for({}), Runner::kWindow);
+  EXPECT_EQ(runner_for({"--view", "wireframe", "--set", "n=3"}), Runner::kWindow);
+  EXPECT_EQ(runner_for({"--list-views"}), Runner::kWindow);
+  EXPECT_EQ(runner_for({"--help"}), Runner::kWindow);
+  for (const char* headless : {"--headless", "--out", "--views", "--info", "--print-text", "--text-out"})
+    EXPECT_EQ(runner_for({"--view", "default", headless}), Runner::kHeadless) << headless;
+  EXPECT_EQ(runner_for({"--set", "--out"}), Runner::kWindow);
+  EXPECT_EQ(runner_for({"--capture", "--headless"}), Runner::kWindow);  // a file named --headless
+  EXPECT_EQ(runner_for({"--load", "--info", "--out", "x.png"}), Runner::kHeadless);
+}
+
+TEST(Options, AnOptionOfTheOtherRunnerIsNamedAsSuch) {
+  using gllab::Runner;
+  const auto message = [](const std::vector<std::string>& args, Runner runner) {
+    try {
+      gllab::parse_options(args, runner);
+    } catch (const gllab::UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({"--headless", "--capture", "x.png"}, Runner::kHeadless),
+            "--capture is a window option; it does not go with --headless or --out");
+  EXPECT_EQ(message({"--frames", "5", "--out", "x.png"}, Runner::kHeadless),
+            "--frames is a window option; it does not go with --headless or --out");
+  EXPECT_EQ(message({"--out", "x.png"}, Runner::kWindow), "--out renders headless; it does not go with window options");
+  EXPECT_TRUE(gllab::parse_options({"--headless", "--out", "x.png"}, Runner::kHeadless).out == "x.png");
 }
 
 TEST(ValidateLab, ReservedAndDuplicateKeysAreRejected) {

@@ -95,6 +95,7 @@ TEST(BezierSplinesLab, CoincidentJointsAreAnErrorNotACrash) {
   EXPECT_NE(h.err.find("view 'joining_c1': parameters (chordal): P[1]=(0, -0.2, 0) and P[2]=(0, -0.2, 0) coincide"),
             std::string::npos)
       << h.err;
+  if (!GLLAB_HAVE_WINDOW) return;  // an OSMesa build: no window to check
   std::vector<std::string> window = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24",
                                      (gllab::testing::kBinDir / kLab).string(), "--capture", (dir / "w.png").string()};
   window.insert(window.end(), args.begin(), args.end());

@@ -1,8 +1,9 @@
-// common/gl/glut_shapes_headless.cpp — glut shapes in the headless programs:
-// freeglut's own GL calls, replayed.
+// common/gl/glut_shapes_replay.cpp — glut shapes headless: freeglut's own GL
+// calls, replayed.
 //
-// The headless programs have no freeglut (glutInit needs an X display, and
-// every glutSolid* call exits without it). tools/glut_record ran freeglut
+// A headless render has no freeglut (glutInit needs an X display, and every
+// glutSolid* call exits without it; in a window use_freeglut_shapes hands the
+// shapes to freeglut itself). tools/glut_record ran freeglut
 // under Xvfb and wrote down each GL call it made for every argument set the
 // labs use, with the arrays it passed, into common/gl/glut_shapes.dat. That
 // file is assembled into this object (.incbin below), and draw_glut_shape
@@ -307,9 +308,13 @@ void replay(const std::string& call) {
 
 }  // namespace
 
-void draw_glut_shape(GlutShape shape, bool solid) { replay(glut_call_text(shape, solid)); }
+void draw_glut_shape(GlutShape shape, bool solid) {
+  if (freeglut_shapes().shape) return freeglut_shapes().shape(shape, solid);  // in a window
+  replay(glut_call_text(shape, solid));
+}
 
 void draw_glut_sphere(int slices, int stacks, bool solid) {
+  if (freeglut_shapes().sphere) return freeglut_shapes().sphere(slices, stacks, solid);
   const double args[] = {1.0, double(slices), double(stacks)};
   replay(glut_call_text("Sphere", solid, args, 3));
 }
