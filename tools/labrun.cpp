@@ -362,7 +362,8 @@ int compare_builds(const Settings& s) {
       }
     }
   }
-  std::printf("%d views of %zu labs: %d byte-identical, %d differ\n", views, s.labs.size(), views - differ, differ);
+  std::printf("%d views of %zu lab%s: %d byte-identical, %d differ\n", views, s.labs.size(),
+              s.labs.size() == 1 ? "" : "s", views - differ, differ);
   return differ ? 1 : 0;
 }
 

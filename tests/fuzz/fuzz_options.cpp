@@ -14,6 +14,7 @@
 // clamped B-spline of degree `degree` on P) so that --load has something to check.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -151,5 +152,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<std::string> args = split(input.substr(0, nul), '\n');
   run(args, Runner::kHeadless, file);
   run(args, Runner::kWindow, file);
+  // The lab program's choice (lab_main.cpp): headless only when an option, not a
+  // value, asks for it; and then that runner's parser is the one that runs.
+  const Runner chosen = gllab::runner_for(args);
+  if (chosen == Runner::kHeadless &&
+      std::none_of(args.begin(), args.end(), [](const std::string& a) { return a.rfind("--", 0) == 0; }))
+    fail("runner_for chose headless without any option");
   return 0;
 }

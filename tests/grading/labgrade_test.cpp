@@ -382,4 +382,25 @@ TEST(Labgrade, TheProfileFollowsTheSourceUnlessGiven) {
   EXPECT_NE(r.err.find("unknown profile 'strict' (profiles: build, images)"), std::string::npos) << r.err;
 }
 
+// labrun --compare-builds (make backends, in CI: the EGL build against its OSMesa
+// twins) passes only when every view is the same, byte for byte: a copy of the
+// program passes, one that turns the shapes by 1 degree fails each view it changes,
+// naming it, with exit status 1.
+TEST(Labrun, CompareBuildsFailsOnAnyDifferingByte) {
+  ScratchDir same("same"), turned("turned");
+  const std::string real = (kBinDir / kLab).string();
+  write_fake_renderer(same / kLab, "exec " + real + " \"$@\"");
+  write_fake_renderer(turned / kLab, "exec " + real + " --set spin=1 \"$@\"");
+  const std::string labrun = (kBinDir / "labrun").string();
+  const gllab::ProcessResult ok =
+      run_process({labrun, "--compare-builds", same.path().string(), "--labs", "01"});
+  EXPECT_EQ(ok.exit_status, 0) << ok.out << ok.err;
+  EXPECT_NE(ok.out.find("4 views of 1 lab: 4 byte-identical, 0 differ"), std::string::npos) << ok.out;
+  const gllab::ProcessResult bad =
+      run_process({labrun, "--compare-builds", turned.path().string(), "--labs", "01"});
+  EXPECT_EQ(bad.exit_status, 1) << bad.out << bad.err;
+  EXPECT_NE(bad.out.find("DIFFERS 01_immediate_mode default: "), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find(" 0 byte-identical, 4 differ"), std::string::npos) << bad.out;
+}
+
 }  // namespace

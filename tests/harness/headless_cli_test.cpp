@@ -160,4 +160,32 @@ TEST(WindowCli, BadViewIsReportedBeforeOpeningAWindow) {
   EXPECT_NE(r.err.find("'nosuch'"), std::string::npos) << r.err;
 }
 
+// The EGL backend (harness/offscreen_egl.cpp) fails with one line, exit 1 and no
+// file when what it needs is missing: GLVND with no EGL vendor has no surfaceless
+// platform, and Mesa told to offer GL 2.1 drops GL_MESA_framebuffer_flip_y (a
+// GL 4.3 extension), without which the frame would differ from OSMesa's.
+// An OSMesa build has no EGL (GLLAB_HAVE_WINDOW is 0 there).
+TEST(HeadlessEgl, WhatTheBackendNeedsIsCheckedWithOneLine) {
+  if (!GLLAB_HAVE_WINDOW) GTEST_SKIP() << "this build's headless backend is OSMesa, not EGL";
+  ScratchDir dir("egl");
+  const auto out = dir / "x.png";
+  const struct {
+    const char* environment;
+    const char* message;
+  } cases[] = {
+      {"__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json",
+       ": EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)"},
+      {"MESA_GL_VERSION_OVERRIDE=2.1", ": GL_MESA_framebuffer_flip_y is missing ("},
+  };
+  for (const auto& c : cases) {
+    const gllab::ProcessResult r = run_process({headless(kLab), "--out", out.string()}, {c.environment});
+    EXPECT_EQ(r.exit_status, kFailureStatus) << c.environment << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind(kLab + c.message, 0), 0u) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.environment;
+  }
+  const gllab::ProcessResult info = run_process({headless(kLab), "--info"});
+  EXPECT_EQ(info.out.rfind("backend: EGL surfaceless\n", 0), 0u) << info.out;
+}
+
 }  // namespace
