@@ -18,9 +18,10 @@ int gllab::run_window(int argc, char** argv) {
     const Lab lab = define_lab();
     validate_lab(lab);
     const Options options = parse_options(std::vector<std::string>(argv + 1, argv + argc), Runner::kWindow);
-    // --help and --list-views need no window.
-    if (options.help || options.list_views) {
-      std::fputs((options.help ? usage_text(lab, program) : list_views_text(lab)).c_str(), stdout);
+    // --help, --list-views and --list-params need no window.
+    if (options.help || options.list_views || options.list_params) {
+      const std::string text = options.help ? usage_text(lab, program) : listing_text(lab, options);
+      std::fputs(text.c_str(), stdout);
       files::finish_stdout();
       return 0;
     }

@@ -111,13 +111,15 @@ Options parse_options(const std::vector<std::string>& args, Runner runner) {
         throw UsageError("malformed --time '" + t + "' (expected seconds >= 0)");
     } else if (a == "--overlay") o.overlay = true;
     else if (a == "--list-views") o.list_views = true;
+    else if (a == "--list-params") o.list_params = true;
     else if (a == "--info") o.info = true;
     else if (a == "--print-text") o.print_text = true;
     else if (a == "--text-out") o.text_out = value();
     else if (a == "--help" || a == "-h") o.help = true;
     else throw UsageError("unknown option '" + a + "' (try --help)");
   }
-  if (o.out.empty() && runner == Runner::kHeadless && !o.help && !o.list_views && !o.info)
+  const bool listing = o.list_views || o.list_params;
+  if (o.out.empty() && runner == Runner::kHeadless && !o.help && !listing && !o.info)
     throw UsageError("missing --out FILE (the PNG to write)");
   if (!o.views.empty() && o.out != "-") throw UsageError("--views goes with --out - (one raw frame per view on stdout)");
   if (!o.views.empty() && !o.view.empty()) throw UsageError("give --view or --views, not both");
@@ -178,13 +180,33 @@ std::string list_views_text(const Lab& lab) {
   return text;
 }
 
+std::string list_params_text(const Lab& lab) {
+  // io::shortest_text reads back as the same double: --set t=0.6 is the default.
+  const auto number = [](double v) { return io::shortest_text(v); };
+  std::string text;
+  for (const Param& p : lab.params)
+    text += "param " + p.name + " " + number(p.value) + " " + number(p.lo) + " " + number(p.hi) + "\n";
+  for (const PointList& l : lab.points)
+    for (std::size_t i = 0; i < l.points.size(); ++i) {
+      const spline::Vec3& q = l.points[i];
+      text += "points " + l.name + " " + std::to_string(i) + " " + std::to_string(l.dimension) + " " +
+              number(q.x) + " " + number(q.y) + " " + number(q.z) + "\n";
+    }
+  return text;
+}
+
+std::string listing_text(const Lab& lab, const Options& options) {
+  return (options.list_views ? list_views_text(lab) : "") +
+         (options.list_params ? list_params_text(lab) : "");
+}
+
 std::string usage_text(const Lab& lab, const std::string& program) {
   std::ostringstream out;
   out << lab.title << "\n\n"
       << "usage: " << program << " [--view NAME] [--size WxH] [--set key=value]... [--capture FILE.png]\n"
       << "       " << program
       << " --headless --out FILE.png [--view NAME] [--size WxH] [--set key=value]...\n"
-      << "       " << program << " --list-views | --info | --help\n\n"
+      << "       " << program << " --list-views | --list-params | --info | --help\n\n"
       << "Without --headless it opens the lab in a window (freeglut). --capture draws the\n"
       << "first frame, writes it as PNG and exits (window smoke test); --capture-views DIR\n"
       << "does so for every view, as DIR/<lab>__<view>.png (graders compare window and\n"
@@ -199,7 +221,10 @@ std::string usage_text(const Lab& lab, const std::string& program) {
       << "Exit status: 0 written, 1 GL/GLU error or unwritable file, 2 bad arguments.\n"
       << "--print-text also prints every text the frame drew (labels, numbers), one per line.\n"
       << "--text-out FILE writes it to FILE instead, for every view: a line \"== VIEW N\", then\n"
-      << "its N lines (graders compare it with reference_images/<lab>__<view>.txt).\n\n";
+      << "its N lines (graders compare it with reference_images/<lab>__<view>.txt).\n"
+      << "--list-views prints the views, one per line; --list-params prints every parameter\n"
+      << "as \"param NAME DEFAULT LO HI\" and every point as \"points LIST INDEX DIMENSION X Y Z\"\n"
+      << "(graders draw hidden inputs from these ranges). Neither needs a display.\n\n";
   out << "options:\n"
       << "  --view NAME       view to show (default: " << lab.views.front().name << ")\n"
       << "  --size WxH        framebuffer size in pixels (default 512x512)\n"

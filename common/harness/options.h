@@ -32,6 +32,7 @@ struct Options {
   double time = 0;                  // --time SECONDS
   bool overlay = false;             // --overlay: draw the help overlay
   bool list_views = false;
+  bool list_params = false;         // --list-params: the params and point lists, for graders
   bool print_text = false;          // --print-text: print the frame's text on stdout (headless)
   std::string text_out;             // --text-out FILE (headless): every view's text to FILE (graders)
   bool info = false;                // --info: print renderer and versions (headless)
@@ -63,6 +64,17 @@ std::string views_text(const Lab& lab);
 /// followed by " expect_error" (kErrorView; labrun reads it), a view that
 /// equals another on purpose by " same_as=OTHER" (View::same_as).
 std::string list_views_text(const Lab& lab);
+/// What --list-params prints: every Param, then every point of every point
+/// list, one per line, in the lab's order:
+///   param NAME DEFAULT LO HI
+///   points NAME INDEX DIMENSION X Y Z
+/// Numbers in the shortest text that reads back as the same double (0.6, 3,
+/// 1e-05), so --set NAME=DEFAULT gives the default exactly. labgrade draws its
+/// hidden inputs from these ranges (tools/hidden_inputs.h).
+std::string list_params_text(const Lab& lab);
+/// What a run with --list-views or --list-params prints (with both: the
+/// views, then the params). Both runners print it and exit 0, without a display.
+std::string listing_text(const Lab& lab, const Options& options);
 
 /// "01_immediate_mode" from a path like "build/bin/01_immediate_mode".
 std::string program_name(const char* argv0);

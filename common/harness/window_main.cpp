@@ -331,8 +331,8 @@ int gllab::run_window(int argc, char** argv) {
       gllab::files::finish_stdout();  // a full disk or a closed pipe: exit 1, one line
       return 0;
     }
-    if (options.list_views) {
-      std::fputs(gllab::list_views_text(window.lab).c_str(), stdout);
+    if (options.list_views || options.list_params) {
+      std::fputs(gllab::listing_text(window.lab, options).c_str(), stdout);
       gllab::files::finish_stdout();
       return 0;
     }

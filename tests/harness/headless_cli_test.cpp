@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "image/image.h"
 #include "test_support.h"
@@ -72,6 +73,114 @@ TEST(HeadlessCli, ListViewsPrintsOneViewPerLine) {
     EXPECT_NE(r.out.find(view), std::string::npos) << r.out;
 }
 
+// The lines of text, and a line's fields split at spaces.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string f; in >> f;) fields.push_back(f);
+  return fields;
+}
+
+// The lines of a --help section ("parameters:", "point lists:"), up to the blank line.
+std::vector<std::string> help_section(const std::string& help, const std::string& title) {
+  const auto at = help.find("\n" + title + "\n");
+  if (at == std::string::npos) return {};
+  const auto start = at + title.size() + 2;
+  std::vector<std::string> lines = lines_of(help.substr(start, help.find("\n\n", start) - start));
+  if (lines == std::vector<std::string>{"  (none)"}) lines.clear();
+  return lines;
+}
+
+// --list-params (options.h list_params_text) of every lab lists each of its
+// Params and point lists, as --help lists them from the same Lab ("name=value
+// [lo..hi]", "P[0..n] 2D"), with no display: both runners print it, the same.
+TEST(ListParams, EveryLabListsEveryParamAndPointListOfItsHelp) {
+  for (const std::string& lab : gllab::testing::lab_ids()) {
+    const gllab::ProcessResult list = run_process({headless(lab), "--list-params"}, {"DISPLAY="});
+    ASSERT_EQ(list.exit_status, 0) << lab << ": " << list.err;
+    EXPECT_EQ(list.err, "") << lab;
+    EXPECT_EQ(run_process({headless(lab), "--headless", "--list-params"}).out, list.out) << lab;
+    const gllab::ProcessResult help = run_process({headless(lab), "--help"});
+    ASSERT_EQ(help.exit_status, 0) << lab;
+    std::vector<std::string> params, lists;  // as --help would print them
+    std::string last_list;
+    std::size_t count = 0;
+    const auto close_list = [&](const std::string& dimension) {
+      if (!last_list.empty())
+        lists.push_back(last_list + "[0.." + std::to_string(count - 1) + "] " + dimension + "D");
+    };
+    std::string dimension;
+    for (const std::string& line : lines_of(list.out)) {
+      const std::vector<std::string> f = fields_of(line);
+      ASSERT_FALSE(f.empty()) << lab << ": an empty line";
+      if (f[0] == "param") {
+        ASSERT_EQ(f.size(), 5u) << lab << ": " << line;
+        std::ostringstream shown;  // usage_text prints the numbers with <<
+        shown << f[1] << '=' << std::stod(f[2]) << " [" << std::stod(f[3]) << ".." << std::stod(f[4]) << "]";
+        params.push_back(shown.str());
+      } else {
+        ASSERT_EQ(f[0], "points") << lab << ": " << line;
+        ASSERT_EQ(f.size(), 7u) << lab << ": " << line;
+        if (f[1] != last_list) {
+          close_list(dimension);
+          last_list = f[1];
+          count = 0;
+        }
+        EXPECT_EQ(f[2], std::to_string(count)) << lab << ": " << line;  // 0, 1, ... in order
+        ++count;
+        dimension = f[3];
+      }
+    }
+    close_list(dimension);
+    const std::vector<std::string> help_params = help_section(help.out, "parameters:");
+    const std::vector<std::string> help_lists = help_section(help.out, "point lists:");
+    ASSERT_EQ(params.size(), help_params.size()) << lab << "\n" << list.out;
+    ASSERT_EQ(lists.size(), help_lists.size()) << lab << "\n" << list.out;
+    for (std::size_t i = 0; i < params.size(); ++i)
+      EXPECT_EQ(help_params[i].rfind("  " + params[i] + " ", 0), 0u) << lab << ": " << help_params[i];
+    for (std::size_t i = 0; i < lists.size(); ++i)
+      EXPECT_EQ(help_lists[i].rfind("  " + lists[i] + " ", 0), 0u) << lab << ": " << help_lists[i];
+  }
+}
+
+// Setting every default --list-params prints, each param and each point
+// with --set, renders every view exactly as the default does: the numbers
+// read back as the lab's own (lab 12: 2D points; lab 17: 3D points).
+TEST(ListParams, SettingEveryListedDefaultRendersTheDefaultPictures) {
+  for (const std::string lab : {"12_bezier_curves", "17_bezier_surfaces"}) {
+    const gllab::ProcessResult list = run_process({headless(lab), "--list-params"});
+    ASSERT_EQ(list.exit_status, 0) << list.err;
+    std::vector<std::string> sets;
+    for (const std::string& line : lines_of(list.out)) {
+      const std::vector<std::string> f = fields_of(line);
+      ASSERT_GE(f.size(), 5u) << line;
+      if (f[0] == "param") sets.insert(sets.end(), {"--set", f[1] + "=" + f[2]});
+      else
+        sets.insert(sets.end(), {"--set", f[1] + "[" + f[2] + "]=" + f[4] + "," + f[5] + "," + f[6]});
+    }
+    ASSERT_FALSE(sets.empty()) << lab << " has nothing to set";
+    std::string views;
+    for (const std::string& line : lines_of(run_process({headless(lab), "--list-views"}).out))
+      if (line.find("expect_error") == std::string::npos)
+        views += (views.empty() ? "" : ",") + fields_of(line)[0];
+    const std::vector<std::string> render = {headless(lab), "--views", views, "--out", "-"};
+    const gllab::ProcessResult plain = run_process(render);
+    ASSERT_EQ(plain.exit_status, 0) << plain.err;
+    std::vector<std::string> with_sets = render;
+    with_sets.insert(with_sets.end(), sets.begin(), sets.end());
+    const gllab::ProcessResult set = run_process(with_sets);
+    ASSERT_EQ(set.exit_status, 0) << set.err;
+    EXPECT_TRUE(set.out == plain.out) << lab << ": setting the listed defaults changed a view (" << views
+                                      << ")";
+  }
+}
+
 // --print-text prints the text the frame drew, one string per line, after
 // writing the PNG: lab 01's default view labels its primitives by their GL
 // names (labs/01_immediate_mode). Without it a successful run prints nothing.
@@ -90,7 +199,8 @@ TEST(HeadlessCli, PrintTextPrintsTheLabelsTheFrameDrew) {
 TEST(HeadlessCli, HelpNamesEveryOption) {
   const gllab::ProcessResult r = run_process({headless(kLab), "--help"});
   EXPECT_EQ(r.exit_status, 0);
-  for (const char* option : {"--headless", "--view", "--size", "--out", "--set", "--list-views", "--help"})
+  for (const char* option :
+       {"--headless", "--view", "--size", "--out", "--set", "--list-views", "--list-params", "--help"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

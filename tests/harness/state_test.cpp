@@ -2,6 +2,9 @@
 // Expected values follow from the documented contracts in lab.h/options.h.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,8 @@ TEST(Options, HeadlessNeedsOutUnlessListingOrHelping) {
   using gllab::Runner;
   EXPECT_THROW(gllab::parse_options({"--view", "default"}, Runner::kHeadless), gllab::UsageError);
   EXPECT_NO_THROW(gllab::parse_options({"--list-views"}, Runner::kHeadless));
+  EXPECT_NO_THROW(gllab::parse_options({"--list-params"}, Runner::kHeadless));
+  EXPECT_NO_THROW(gllab::parse_options({"--list-params"}, Runner::kWindow));
   EXPECT_NO_THROW(gllab::parse_options({"--view", "default"}, Runner::kWindow));
   EXPECT_THROW(gllab::parse_options({"--out", "x.png"}, Runner::kWindow), gllab::UsageError);
   EXPECT_THROW(gllab::parse_options({"--out", "dir/"}, Runner::kHeadless), gllab::UsageError);
@@ -99,6 +104,8 @@ TEST(Options, RunnerForPicksHeadlessByItsOptionsNotByValues) {
   EXPECT_EQ(runner_for({}), Runner::kWindow);
   EXPECT_EQ(runner_for({"--view", "wireframe", "--set", "n=3"}), Runner::kWindow);
   EXPECT_EQ(runner_for({"--list-views"}), Runner::kWindow);
+  EXPECT_EQ(runner_for({"--list-params"}), Runner::kWindow);  // both runners take it
+  EXPECT_EQ(runner_for({"--list-params", "--headless"}), Runner::kHeadless);
   EXPECT_EQ(runner_for({"--help"}), Runner::kWindow);
   for (const char* headless : {"--headless", "--out", "--views", "--info", "--print-text", "--text-out"})
     EXPECT_EQ(runner_for({"--view", "default", headless}), Runner::kHeadless) << headless;
@@ -220,6 +227,66 @@ TEST(ValidateLab, EveryViewNeedsItsDrawFunction) {
   EXPECT_EQ(gllab::list_views_text(lab), "default\noutline same_as=default\n");
   lab.views[1].name = "Outline";
   EXPECT_THROW(gllab::validate_lab(lab), std::logic_error);
+}
+
+// --list-params (options.h): "param NAME DEFAULT LO HI" per Param, then
+// "points LIST INDEX DIMENSION X Y Z" per point, in the lab's order.
+TEST(ListParams, PrintsEveryParamThenEveryPointInOrder) {
+  gllab::Lab lab;
+  lab.views = {{"default", "", kNoDraw}};
+  lab.params = {{"slices", 16, 3, 64, ""}, {"lighting", 1, 0, 1, ""}, {"t", 0.6, 0, 1, ""}};
+  lab.points = {{"P", {{0, 0, 0}, {2, 4.5, 0}}, "", 2}, {"Q", {{-1, 0.25, 3}}, "", 3}};
+  EXPECT_EQ(gllab::list_params_text(lab),
+            "param slices 16 3 64\n"
+            "param lighting 1 0 1\n"
+            "param t 0.6 0 1\n"
+            "points P 0 2 0 0 0\n"
+            "points P 1 2 2 4.5 0\n"
+            "points Q 0 3 -1 0.25 3\n");
+  lab.params.clear();
+  lab.points.clear();
+  EXPECT_EQ(gllab::list_params_text(lab), "");  // a lab with nothing to vary
+}
+
+// Every printed number reads back as the same double, bit for bit, so that
+// --set NAME=DEFAULT renders the default (values with no short decimal).
+TEST(ListParams, NumbersReadBackExactly) {
+  const std::vector<double> values = {1.0 / 3, 0.1 + 0.2, -2.0 / 7, 1e-5, 123456.789, 5e-324, -0.0};
+  gllab::Lab lab;
+  lab.views = {{"default", "", kNoDraw}};
+  for (std::size_t i = 0; i < values.size(); ++i)
+    lab.params.push_back({"p" + std::to_string(i), values[i], -1e6, 1e6, ""});
+  lab.points = {{"P", {{values[0], values[1], values[2]}}, "", 3}};
+  std::istringstream text(gllab::list_params_text(lab));
+  std::vector<double> read;
+  for (std::string line; std::getline(text, line);) {
+    std::istringstream fields(line);
+    std::string kind, name, field;
+    fields >> kind >> name;
+    if (kind == "points") fields >> field >> field;  // INDEX DIMENSION
+    while (fields >> field) read.push_back(std::strtod(field.c_str(), nullptr));
+  }
+  std::vector<double> expected;
+  for (double v : values) expected.insert(expected.end(), {v, -1e6, 1e6});
+  expected.insert(expected.end(), {values[0], values[1], values[2]});
+  ASSERT_EQ(read.size(), expected.size());
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    EXPECT_EQ(read[i], expected[i]) << i;
+    EXPECT_EQ(std::signbit(read[i]), std::signbit(expected[i])) << i;
+  }
+}
+
+// Both listings in one run print the views, then the params.
+TEST(ListParams, WithListViewsPrintsBothInOrder) {
+  gllab::Lab lab;
+  lab.views = {{"default", "", kNoDraw}};
+  lab.params = {{"n", 2, 1, 5, ""}};
+  const auto listing = [&](const std::vector<std::string>& args) {
+    return gllab::listing_text(lab, gllab::parse_options(args, gllab::Runner::kWindow));
+  };
+  EXPECT_EQ(listing({"--list-params"}), "param n 2 1 5\n");
+  EXPECT_EQ(listing({"--list-views"}), "default\n");
+  EXPECT_EQ(listing({"--list-params", "--list-views"}), "default\nparam n 2 1 5\n");
 }
 
 // The orbit camera: --camera yaw,pitch,zoom sets it, and the arguments that
