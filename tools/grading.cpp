@@ -87,9 +87,9 @@ class TextFile {
  public:
   // Throws std::runtime_error when there is no usable temporary folder (the
   // grading stops: it is not the student's fault).
-  TextFile() {
+  explicit TextFile(const fs::path& scratch = {}) {
     std::error_code ec;
-    const fs::path dir = fs::temp_directory_path(ec);
+    const fs::path dir = scratch.empty() ? fs::temp_directory_path(ec) : scratch;
     if (ec)
       throw std::runtime_error("no temporary folder for a renderer's text (" + ec.message() + ")");
     std::string name = (dir / "gllab-text-XXXXXX").string();
@@ -112,6 +112,11 @@ class TextFile {
   // when the renderer left no regular file or one over kMaxTextFileBytes.
   std::map<std::string, std::vector<std::string>> sections() const {
     std::map<std::string, std::vector<std::string>> out;
+    // A sandboxed renderer may have swapped its file for a link to one of the
+    // grader's: the text read is the file the renderer wrote, or nothing.
+    std::error_code ec;
+    if (fs::is_symlink(path_, ec))
+      throw files::FileError(path_.string() + " is a symbolic link, not the renderer's text");
     std::istringstream in(files::read_input(path_.string(), kMaxTextFileBytes));
     for (std::string line; std::getline(in, line);) {
       if (line.rfind("== ", 0) != 0) break;  // not our format: no text
@@ -130,8 +135,8 @@ class TextFile {
 
 class BuildSource : public Source {
  public:
-  BuildSource(fs::path dir, std::vector<std::string> env, double timeout)
-      : dir_(std::move(dir)), env_(std::move(env)), timeout_(timeout) {}
+  BuildSource(fs::path dir, RenderSettings settings)
+      : dir_(std::move(dir)), settings_(std::move(settings)), timeout_(settings_.timeout_seconds) {}
 
   Image obtain(const ViewId& id) const override {
     Obtained o = render({id}).front();
@@ -170,12 +175,15 @@ class BuildSource : public Source {
     }
     std::string list;
     for (const ViewId& v : views) list += (list.empty() ? "" : ",") + v.view;
-    const TextFile text;
+    const TextFile text(settings_.scratch);
     std::vector<std::string> argv = {program.string(), "--headless", views.size() == 1 ? "--view" : "--views", list,
                                      "--out", "-", "--text-out", text.path().string()};
-    const ProcessResult r = run_process(
-        argv, env_,
-        ProcessLimits{timeout_ * static_cast<double>(views.size()), kMaxRendererOutputBytes});
+    const auto sets = settings_.sets.find(views.front().lab);
+    if (sets != settings_.sets.end())
+      for (const std::string& set : sets->second) argv.insert(argv.end(), {"--set", set});
+    const ProcessLimits limits{timeout_ * static_cast<double>(views.size()), kMaxRendererOutputBytes};
+    const ProcessResult r = settings_.launch ? settings_.launch(argv, settings_.env, limits)
+                                             : run_process(argv, settings_.env, limits);
     // A batch that failed anywhere: every view on its own, for its own reason
     // (the text file is written only when all views were drawn).
     const bool ran = r.started && !r.timed_out && !r.output_exceeded && r.exit_status == 0;
@@ -216,6 +224,10 @@ class BuildSource : public Source {
   // One line: why a render gave no image.
   std::string why_not(const ProcessResult& r) const {
     if (!r.started) return first_line(r.err);
+    if (!r.limit_hit.empty()) {
+      const std::string said = first_line(r.err);
+      return "stopped by the sandbox: " + r.limit_hit + (said.empty() ? "" : " (it said: " + said + ")");
+    }
     if (r.timed_out) {
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%g", timeout_);
@@ -237,7 +249,7 @@ class BuildSource : public Source {
     return {};
   }
   fs::path dir_;
-  std::vector<std::string> env_;
+  RenderSettings settings_;
   double timeout_;
 };
 
@@ -430,7 +442,8 @@ std::vector<ViewId> select_views(const std::vector<ViewId>& all, const std::vect
   return out;
 }
 
-std::unique_ptr<Source> build_source(const fs::path& dir, std::vector<std::string> env, double timeout_seconds) {
+std::unique_ptr<Source> build_source(const fs::path& dir, RenderSettings settings) {
+  const double timeout_seconds = settings.timeout_seconds;
   if (!(timeout_seconds > 0 && timeout_seconds <= kMaxTimeoutSeconds)) {
     char text[64];
     std::snprintf(text, sizeof text, "a timeout of %g s is not in (0, %g]", timeout_seconds,
@@ -438,7 +451,14 @@ std::unique_ptr<Source> build_source(const fs::path& dir, std::vector<std::strin
     throw UsageError(text);
   }
   if (!fs::is_directory(dir)) throw UsageError("no build folder " + dir.string());
-  return std::make_unique<BuildSource>(dir, std::move(env), timeout_seconds);
+  return std::make_unique<BuildSource>(dir, std::move(settings));
+}
+
+std::unique_ptr<Source> build_source(const fs::path& dir, std::vector<std::string> env, double timeout_seconds) {
+  RenderSettings settings;
+  settings.env = std::move(env);
+  settings.timeout_seconds = timeout_seconds;
+  return build_source(dir, std::move(settings));
 }
 
 std::unique_ptr<Source> image_source(const fs::path& dir) {

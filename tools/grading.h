@@ -179,12 +179,31 @@ struct SubmissionError : std::runtime_error {
 /// How long one render may take before it counts as hung (a student's endless loop).
 inline constexpr double kDefaultTimeoutSeconds = 60;
 
+/// Runs one renderer (argv[0] is its path) with extra environment and limits,
+/// and returns how it went. The default is run_process, here; a class grade
+/// runs student programs in the sandbox (sandbox.h) instead.
+using Launcher = std::function<ProcessResult(const std::vector<std::string>& argv,
+                                             const std::vector<std::string>& env,
+                                             const ProcessLimits& limits)>;
+
+/// How a build's programs are run.
+struct RenderSettings {
+  std::vector<std::string> env;  // NAME=VALUE for the renderer (e.g. GALLIUM_DRIVER=softpipe)
+  double timeout_seconds = kDefaultTimeoutSeconds;
+  /// --set values per lab, given to every render of its views (hidden inputs).
+  std::map<std::string, std::vector<std::string>> sets;
+  Launcher launch;                   // empty: run_process
+  /// Where the renderer's --text-out file is made (empty: the temporary
+  /// folder); a launcher must let the renderer write there.
+  std::filesystem::path scratch;
+};
+
 /// A build of this repository: renders each view with <dir>/<lab> (or
 /// <dir>/bin/<lab>) --headless --view V --out - (a raw frame, image/pam.h).
-/// env entries NAME=VALUE go to the renderer (e.g. GALLIUM_DRIVER=softpipe).
-/// A render that runs longer than timeout_seconds (0 < t <= kMaxTimeoutSeconds,
+/// A render that runs longer than the timeout (0 < t <= kMaxTimeoutSeconds,
 /// else UsageError), or writes more than kMaxRendererOutputBytes to stdout or
 /// stderr, is killed and fails.
+std::unique_ptr<Source> build_source(const std::filesystem::path& dir, RenderSettings settings);
 std::unique_ptr<Source> build_source(const std::filesystem::path& dir, std::vector<std::string> env = {},
                                      double timeout_seconds = kDefaultTimeoutSeconds);
 /// A folder of PNGs named <lab>__<view>.png, each with its text <lab>__<view>.txt.

@@ -25,6 +25,9 @@ struct ProcessResult {
   // Killed (SIGKILL) because stdout or stderr passed ProcessLimits::max_output_bytes;
   // out and err then hold the first max_output_bytes of each.
   bool output_exceeded = false;
+  // Set by a caller that ran the program in the sandbox (sandbox.h): the limit
+  // it reached, named ("process limit of 128 reached"), or "".
+  std::string limit_hit;
 };
 
 /// What a run may take: time and output. 0 is no limit.
