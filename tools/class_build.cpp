@@ -2,9 +2,9 @@
 #include "class_build.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,8 +66,17 @@ bool looks_like_source(const fs::path& dir) {
   std::ifstream in(lists);
   std::stringstream text;
   text << in.rdbuf();
-  static const std::regex project(R"(project\s*\(\s*gllab\b)", std::regex::icase);
-  return std::regex_search(text.str(), project);
+  // "project(gllab", spaces allowed around the parenthesis.
+  const std::string t = text.str();
+  for (std::size_t at = t.find("project"); at != std::string::npos; at = t.find("project", at + 1)) {
+    std::size_t k = t.find_first_not_of(" \t", at + 7);
+    if (k == std::string::npos || t[k] != '(') continue;
+    k = t.find_first_not_of(" \t\n", k + 1);
+    if (k != std::string::npos && t.compare(k, 5, "gllab") == 0 &&
+        (k + 5 == t.size() || !(std::isalnum(static_cast<unsigned char>(t[k + 5])) || t[k + 5] == '_')))
+      return true;
+  }
+  return false;
 }
 
 double CacheStats::hit_rate() const {

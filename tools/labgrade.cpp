@@ -963,6 +963,10 @@ int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest&
           row.graded.hidden.push_back({failed, pass.index, sets_text(pass.sets.at(v.lab)), pass.refs});
         }
     }
+    if (source) {  // 76 MB of objects and programs a student: only the log and the cache stay
+      std::error_code ec;
+      fs::remove_all(work.builds() / row.student, ec);
+    }
     const Graded& g = row.graded;
     const int renders = static_cast<int>(g.visible.views.size() + g.hidden.size());
     const int passed = g.visible.passed() + g.hidden_passed();
