@@ -512,3 +512,23 @@ TEST(LabgradeProcess, AHugeOrNanTimeoutIsNoDeadlineAndDoesNotOverflow) {
 }
 
 }  // namespace
+
+// ---- --hidden, --seed, --reference-build: strict, and only where they apply ----------
+
+TEST(LabgradeLimits, HiddenInputOptionsAreStrict) {
+  const std::string build = kBinDir.string();
+  for (const std::string n : {"3.5", "-1", "101", "x", ""})
+    expect_usage_error(grade({"--build", build, "--hidden", n}),
+                       "--hidden '" + n + "' is not a whole number from 0 to 100");
+  for (const std::string s : {"-1", "1e3", "18446744073709551616", "0x10"})
+    expect_usage_error(grade({"--build", build, "--hidden", "1", "--seed", s}),
+                       "--seed '" + s + "' is not a whole number from 0 to 9999999999999999999");
+  expect_usage_error(grade({"--build", build, "--seed", "5"}), "--seed goes with --hidden N");
+  expect_usage_error(grade({"--images", build, "--hidden", "1"}),
+                     "--hidden needs programs to render: a build or a class, not --images");
+  ScratchDir empty("empty");
+  expect_usage_error(grade({"--build", build, "--labs", "01", "--hidden", "1", "--reference-build",
+                            empty.path().string()}),
+                     "--reference-build " + empty.path().string() +
+                         " holds no lab programs (give the instructor's build)");
+}
