@@ -905,9 +905,26 @@ int run_class(const Settings& s, const std::vector<ViewId>& all, const Manifest&
     std::printf("compiler cache: building the instructor's tree %s once, into %s\n", tree.c_str(),
                 work.base_cache().c_str());
     std::fflush(stdout);
-    const TreeBuild seed = build_tree(tree, work.root / "seed", work.own_cache(".seed"), work.base_cache(), tb, true);
+    // A copy in WORK: the sandbox's user (nobody, when labgrade runs as root)
+    // may not reach the tree where it is (under /root), and the copy does not
+    // change while the class is graded.
+    const fs::path copy = work.root / "seed-src";
+    std::error_code ec;
+    fs::remove_all(copy, ec);
+    make_folder("--work", copy);
+    for (const auto& e : fs::directory_iterator(tree)) {
+      const std::string name = e.path().filename().string();
+      if (name == ".git" || name.rfind("build", 0) == 0 || name == "reference_images" || name == "out" ||
+          fs::equivalent(e.path(), work.root, ec))
+        continue;
+      fs::copy(e.path(), copy / name, fs::copy_options::recursive, ec);
+      if (ec) throw UsageError("cannot copy the instructor's tree into " + copy.string() + " (" + ec.message() + ")");
+    }
+    const TreeBuild seed = build_tree(copy, work.root / "seed", work.own_cache(".seed"), work.base_cache(), tb, true);
     if (!seed.ok) throw UsageError("the instructor's tree does not build: " + seed.reason + "\n" + seed.log_tail);
     write_text(seeded, "built in " + fixed1(seed.seconds) + " s\n");
+    fs::remove_all(work.root / "seed", ec);  // the objects are in the cache now
+    fs::remove_all(copy, ec);
     std::printf("compiler cache: seeded in %.1f s (%lld objects)\n", seed.seconds, seed.cache.misses);
   }
   seeding.reset();
