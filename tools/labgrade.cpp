@@ -600,10 +600,13 @@ std::vector<HiddenPass> prepare_hidden(const Settings& s, const std::vector<View
   for (const ViewId& v : views)
     if (labs.empty() || labs.back() != v.lab) labs.push_back(v.lab);
   // The references of these inputs are rendered once per --work folder and
-  // kept: WORK/hidden/<key>/<k>/, the key naming the seed, N, the labs and the
-  // reference programs (path, size, time), so that labgrade processes grading
-  // one student each (README "Grading a class", GNU parallel) share them.
+  // kept: WORK/hidden/<key>/<k>/, the key naming the seed, N, the labs, the
+  // reference programs (path, size, time), the views and --env, so that
+  // labgrade processes grading one student each (README "A class on many
+  // machines", examples/grade_class_parallel.sh) share them.
   std::string key = std::to_string(s.seed) + " " + std::to_string(s.hidden) + " " + fs::absolute(ref).string();
+  for (const ViewId& v : views) key += " " + v.name();
+  for (const std::string& e : s.env) key += " env " + e;
   for (const std::string& lab : labs) {
     const fs::path program = lab_program(ref, lab);
     if (program.empty()) throw UsageError("--reference-build " + ref.string() + " has no program " + lab);
