@@ -321,13 +321,7 @@ TEST(LabgradeClass, ASyntheticClassOfSourceTreesIsGradedInTheSandboxWithHiddenIn
       << "a failing hidden render shows its inputs";
   ASSERT_TRUE(fs::exists("/usr/bin/chromium")) << "chromium is missing: ./lab installs it";
   const auto dom = [&](const fs::path& page) {
-    ScratchDir profile("chromium");
-    const gllab::ProcessResult c = run_process(
-        {"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=10000", "--dump-dom",
-         "file://" + page.string()},
-        {}, 120);
+    const gllab::ProcessResult c = gllab::testing::chromium_dom(page);
     EXPECT_EQ(c.exit_status, 0) << c.err;
     return c.out;
   };

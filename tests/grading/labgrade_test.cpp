@@ -231,15 +231,10 @@ TEST(Labgrade, ReportHasEveryViewFailuresFirstAndAgreesWithJsonAndCsv) {
 // (the page's own script counts loaded images into its title; Debian's
 // chromium, installed by ./lab).
 TEST(Labgrade, ReportLoadsInHeadlessChromiumWithEveryImage) {
-  ScratchDir report("report"), profile("chromium");
+  ScratchDir report("report");
   ASSERT_EQ(grade({"--build", kBinDir.string(), "--labs", "01", "--report", report.path().string(), "--quiet"}).exit_status, 0);
   ASSERT_TRUE(fs::exists("/usr/bin/chromium")) << "chromium is missing: ./lab installs it";
-  const gllab::ProcessResult r = run_process(
-      {"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-       "--disable-background-networking", "--disable-component-update", "--disable-sync",
-       "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=10000", "--dump-dom",
-       "file://" + (report / "index.html").string()},
-      {}, 120);
+  const gllab::ProcessResult r = gllab::testing::chromium_dom(report / "index.html");
   ASSERT_EQ(r.exit_status, 0) << r.err;
   // 4 views x (reference, submission, heat map).
   EXPECT_NE(r.out.find("<title>gllab grade: images 12/12 loaded</title>"), std::string::npos)

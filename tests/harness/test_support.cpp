@@ -27,4 +27,13 @@ int line_count(const std::string& text) {
   return static_cast<int>(text.back() == '\n' ? n : n + 1);
 }
 
+gllab::ProcessResult chromium_dom(const std::filesystem::path& page) {
+  const ScratchDir profile("chromium");
+  return run_process({"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                      "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                      "--disable-sync", "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=10000",
+                      "--dump-dom", "file://" + page.string()},
+                     {}, 120);
+}
+
 }  // namespace gllab::testing

@@ -50,4 +50,9 @@ class ScratchDir {
 /// Number of lines in text (a trailing newline does not start a new line).
 int line_count(const std::string& text);
 
+/// The page after Debian's chromium (installed by ./lab) loaded it headless,
+/// its scripts run: `chromium --headless --dump-dom file://PAGE`, with a
+/// fresh profile and no network services. exit_status and err tell whether it ran.
+gllab::ProcessResult chromium_dom(const std::filesystem::path& page);
+
 }  // namespace gllab::testing
