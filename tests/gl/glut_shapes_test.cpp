@@ -23,12 +23,12 @@ namespace {
 using gllab::run_process;
 using gllab::testing::kSourceDir;
 using gllab::testing::ScratchDir;
+using gllab::testing::xvfb_run;
 
 const std::string kWindowLab = GLLAB_GLUT_SHAPES_LAB;
 const std::string kHeadlessLab = GLLAB_GLUT_SHAPES_LAB;  // run with --out: headless, the replay
 const std::string kReplayWindowLab = GLLAB_GLUT_SHAPES_LAB_REPLAY_WINDOW;
 const std::string kRecorder = GLLAB_GLUT_RECORD;
-const std::vector<std::string> kXvfbRun = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24"};
 // A shape that fills little of the frame still covers thousands of pixels at
 // 512x512 (the smallest, the wire tetrahedron, covers about 1700); fewer
 // means nothing was drawn and an identical comparison would prove nothing.
@@ -81,7 +81,7 @@ class EveryGlutCall : public ::testing::TestWithParam<GlutCall> {
   // Renders the call with a window program under Xvfb into dir_/<tag>.png.
   gllab::Image window(const std::string& program, const std::string& tag, const std::vector<std::string>& sets) {
     const auto png = dir_ / (tag + ".png");
-    std::vector<std::string> argv = kXvfbRun;
+    std::vector<std::string> argv = xvfb_run(dir_);
     argv.insert(argv.end(), {program, "--capture", png.string()});
     // ASAN_OPTIONS: Mesa's GLX driver leaks per window (lab_views_test.cpp).
     const gllab::ProcessResult r = run_process(with_sets(argv, sets), {"ASAN_OPTIONS=detect_leaks=0"});
@@ -132,11 +132,11 @@ INSTANTIATE_TEST_SUITE_P(GlutShapes, EveryGlutCall, ::testing::ValuesIn(all_call
 // unrecorded call, which freeglut would draw, is an error there.
 TEST(GlutReplay, ReplayWindowProgramReplays) {
   ScratchDir dir("glut-replay-window");
-  std::vector<std::string> argv = kXvfbRun;
+  std::vector<std::string> argv = xvfb_run(dir);
   argv.insert(argv.end(), {kReplayWindowLab, "--set", "stacks=3", "--set", "slices=5", "--capture",
                            (dir / "x.png").string()});
   const gllab::ProcessResult r = run_process(argv, {"ASAN_OPTIONS=detect_leaks=0"});
-  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_EQ(r.exit_status, 1) << r.err;
   EXPECT_NE(r.err.find("glutSolidSphere(1, 5, 3) is not recorded"), std::string::npos) << r.err;
 }
 
@@ -147,7 +147,7 @@ std::string file_bytes(const std::filesystem::path& p) {
 
 TEST(GlutRecording, ReRecordingGivesTheCommittedFile) {
   ScratchDir dir("glut-record");
-  std::vector<std::string> argv = kXvfbRun;
+  std::vector<std::string> argv = xvfb_run(dir);
   argv.push_back(kRecorder);
   argv.push_back((dir / "glut_shapes.dat").string());
   const gllab::ProcessResult r = run_process(argv, {"ASAN_OPTIONS=detect_leaks=0"});

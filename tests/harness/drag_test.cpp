@@ -38,8 +38,9 @@ gllab::ProcessResult drive_window(const ScratchDir& dir, const std::string& acti
                              "window=$(xdotool search --sync --name 'drag lab'); " +
                              "xdotool mousemove --window $window 256 256 sleep 0.3 " + actions + "; " +
                              "wait $program";
-  return gllab::run_process({"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", "/bin/sh", "-c", script},
-                            {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks (lab_views_test.cpp)
+  std::vector<std::string> argv = gllab::testing::xvfb_run(dir);
+  argv.insert(argv.end(), {"/bin/sh", "-c", script});
+  return gllab::run_process(argv, {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks (lab_views_test.cpp)
 }
 
 // Where drag_lab draws P[1] = (0, 1) in GLUT pixels: x = (0 - 1.5 + 3) * 512 / 6 = 128,
@@ -130,8 +131,9 @@ gllab::ProcessResult drive(const std::string& program, const std::string& title,
   const std::string script = "cd '" + dir.path().string() + "' && '" + program + "'" + argv +
                              " & program=$!; window=$(xdotool search --sync --name '" + title + "'); " +
                              "xdotool mousemove --window $window 256 256 sleep 0.3 " + actions + "; wait $program";
-  return gllab::run_process({"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", "/bin/sh", "-c", script},
-                            {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks (lab_views_test.cpp)
+  std::vector<std::string> command = gllab::testing::xvfb_run(dir);
+  command.insert(command.end(), {"/bin/sh", "-c", script});
+  return gllab::run_process(command, {"ASAN_OPTIONS=detect_leaks=0"});  // Mesa's GLX leaks (lab_views_test.cpp)
 }
 
 const std::string kTurnAndZoom =

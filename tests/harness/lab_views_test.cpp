@@ -146,10 +146,9 @@ TEST_P(EveryLabWindow, EveryViewUnderXvfbEqualsHeadlessRender) {
   // glBitmap), and it is unloaded before LeakSanitizer runs, so its frames
   // cannot be named in a suppression. Leak checking is off for the window
   // process alone; AddressSanitizer and UBSan still check it.
-  const gllab::ProcessResult w = run_process(
-      {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1024x768x24", (kBinDir / lab).string(),
-       "--capture-views", dir.path().string()},
-      {"ASAN_OPTIONS=detect_leaks=0"});
+  std::vector<std::string> argv = gllab::testing::xvfb_run(dir);
+  argv.insert(argv.end(), {(kBinDir / lab).string(), "--capture-views", dir.path().string()});
+  const gllab::ProcessResult w = run_process(argv, {"ASAN_OPTIONS=detect_leaks=0"});
   ASSERT_EQ(w.exit_status, 0) << w.out << w.err;
   const gllab::ProcessResult list = run_process({headless(lab), "--list-views"});
   std::stringstream views(list.out);

@@ -27,6 +27,11 @@ int line_count(const std::string& text) {
   return static_cast<int>(text.back() == '\n' ? n : n + 1);
 }
 
+std::vector<std::string> xvfb_run(const ScratchDir& dir) {
+  return {"/usr/bin/xvfb-run", "-a", "-f", (dir / "xvfb-run.Xauthority").string(), "-s",
+          "-screen 0 1024x768x24"};
+}
+
 gllab::ProcessResult chromium_dom(const std::filesystem::path& page) {
   const ScratchDir profile("chromium");
   return run_process({"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
