@@ -7,6 +7,10 @@
 #include <cstdlib>
 #include <cstring>
 
+#if defined(GLLAB_ASAN)
+#include <sanitizer/asan_interface.h>
+#endif
+
 #include "harness/lab.h"
 
 namespace gllab {
@@ -106,11 +110,21 @@ extern "C" [[noreturn]] void __longjmp_chk(void* env, int value) {
   static const auto next = reinterpret_cast<LongJump>(dlsym(RTLD_NEXT, "__longjmp_chk"));
   if (gllab::in_libglu(__builtin_return_address(0))) gllab::on_glu_longjmp(value);
   if (!next) std::abort();  // no glibc: cannot happen in a program that links GLU
+#if defined(GLLAB_ASAN)
+  // What AddressSanitizer's own __longjmp_chk does first: unpoison the stack
+  // the jump abandons. GCC's runtime is libasan.so, so RTLD_NEXT above finds its
+  // __longjmp_chk and this is done twice; clang links its runtime into the
+  // program, where this definition replaces its, and RTLD_NEXT finds glibc's.
+  // Without it the abandoned frames stay poisoned, and the next call that uses
+  // that stack (llvmpipe compiling a shader, in lab 22's reversed_outer_loop
+  // view) stops with "AddressSanitizer: CHECK failed: asan_thread.cpp:370".
+  __asan_handle_no_return();
+#endif
   next(env, value);
   std::abort();  // __longjmp_chk does not return
 }
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLLAB_ASAN)
 // GLU 9.0.2 leaks on the path of its lost errors: the jump skips the frames
 // that own what the tessellation allocated. Measured with LeakSanitizer:
 // 34,712 bytes from operator new and about 1 KB from malloc in libGLU.so for

@@ -30,7 +30,7 @@
 #include "spline/surface.h"
 #include "spline/trim.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLLAB_ASAN)
 #include <sanitizer/lsan_interface.h>
 #endif
 
@@ -657,7 +657,7 @@ class EvalStateGuard {
 class GluErrorPathLeakExemption {
  public:
   explicit GluErrorPathLeakExemption(const BsplineSurface& s) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLLAB_ASAN)
     if (s.trims.empty()) return;
     try {
       spline::validate_trim_loops(s.trims, spline::uv_domain(s));
@@ -670,7 +670,7 @@ class GluErrorPathLeakExemption {
 #endif
   }
   ~GluErrorPathLeakExemption() {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLLAB_ASAN)
     if (active_) __lsan_enable();
 #endif
   }

@@ -5,8 +5,8 @@
 //   build    a student's build, rendered here on the reference renderer.
 //            Benign: correct code that computes the same thing another way
 //            (tests/grading/benign/*.json, each lab graded whole) and llvmpipe
-//            on 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128); a clang -O0
-//            build of the whole project is graded view by view in the build
+//            on 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128); a clang -O1
+//            sanitizer build of the whole project is graded view by view in the build
 //            profile by `make clang` (EveryLabView.MatchesItsReference there).
 //   images   renders made elsewhere. Benign: softpipe (GALLIUM_DRIVER=softpipe)
 //            and llvmpipe on 128-bit vectors, every view; window renders under
@@ -299,7 +299,7 @@ std::string calibration_doc(const Measured& m) {
     }
   out << "\nAlso benign, asserted elsewhere with a score of 0 (byte-identical): a window (GLX under Xvfb) against "
          "headless, every view (`EveryLabWindow`); three headless runs (`ThreeHeadlessRunsAreByteIdentical`); "
-         "the whole project built by clang -O0, every view (`make clang`: `EveryLabView.MatchesItsReference` on that build; "
+         "the whole project built by clang -O1 with ASan and UBSan, every view (`make clang`: `EveryLabView.MatchesItsReference` on that build; "
          "its largest channel difference was 0).\n\n"
       << "## Mistakes: must fail (in the images profile too, unless below foreign-renderer noise)\n\n"
       << "| mistake | view | file | build | images |\n|---|---|---|---|---|\n";

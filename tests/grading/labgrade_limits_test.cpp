@@ -133,7 +133,7 @@ TEST(LabgradeLimits, AFractionalTimeoutIsReportedAsGiven) {
 // view each, graded as images, keep the memory small. Not under ASan, which
 // reserves terabytes of address space for its shadow memory.
 TEST(LabgradeLimits, AThreadThatCannotStartLeavesTheWorkToTheThreadsThatDid) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLLAB_ASAN)
   GTEST_SKIP() << "ulimit -v and AddressSanitizer do not mix";
 #else
   constexpr int kLabs = 30;
