@@ -108,8 +108,8 @@ sanitize:
 	$(SANITIZER_ENV) ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS)
 
 # The second compiler and CI's sanitizer build in one: clang with ASan + UBSan
-# at -O1 with line tables only (what the sanitizers need for their reports; it
-# compiles faster than -O2 -g), the same tests as make sanitize, and every view
+# at -O1 with line tables only (the file and line the sanitizers' reports need,
+# not full debug information), the same tests as make sanitize, and every view
 # graded in the build profile against the references GCC -O2 made (a benign build).
 CLANG_FLAGS = -O1 -gline-tables-only -DNDEBUG
 clang:
