@@ -411,11 +411,18 @@ TEST(SandboxArguments, BadArgumentsThrowNamingThem) {
   EXPECT_THROW(run_sandboxed({"true"}, box), std::invalid_argument);
 }
 
-// bubblewrap is a requirement of class grading: where it is installed, the
-// sandbox must work (else this names the reason).
+// bubblewrap is a requirement of class grading. Where it is installed but the
+// kernel refuses it a user namespace (in a chroot, measured on a fresh Debian 12
+// root; in some containers), the sandbox tests skip with the reason, and so
+// does this one, unless GLLAB_REQUIRE_SANDBOX=1: .ci/run sets it, so that CI
+// cannot skip them silently.
 TEST(SandboxAvailability, ReasonIsEmptyWhereBwrapIsInstalled) {
   if (!fs::exists("/usr/bin/bwrap")) GTEST_SKIP() << "bubblewrap is not installed";
-  EXPECT_EQ(gllab::sandbox_unavailable_reason(), "");
+  const std::string why = gllab::sandbox_unavailable_reason();
+  const char* require = std::getenv("GLLAB_REQUIRE_SANDBOX");
+  if (!why.empty() && !(require && std::string(require) == "1"))
+    GTEST_SKIP() << "no sandbox here: " << why << " (GLLAB_REQUIRE_SANDBOX=1 makes this a failure)";
+  EXPECT_EQ(why, "");
 }
 
 TEST(SandboxAvailability, MissingBwrapIsNamed) {
